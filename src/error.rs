@@ -1,0 +1,59 @@
+//! The library's error type.
+//!
+//! Every error says where it applies: text errors carry the origin (file
+//! path or `<string>`), line and column; other variants carry the values
+//! that were out of range.
+//!
+//! ```
+//! use speclab::{Role, TabulatedSpectrum};
+//! let err = TabulatedSpectrum::parse("{380, 1}, {370, 2}", "<string>", Role::Light).unwrap_err();
+//! assert_eq!(
+//!     err.to_string(),
+//!     "<string>:1:11: expected a wavelength greater than 380 nm, found 370 nm"
+//! );
+//! ```
+
+use std::fmt;
+
+use crate::parse::ParseError;
+
+/// Errors of the public API.
+#[derive(Debug)]
+#[non_exhaustive]
+pub enum Error {
+    /// Text or samples that do not form a valid spectrum.
+    Parse(ParseError),
+    /// A bucket count with no compiled instance of `RegularSpectrum<M>`.
+    UnsupportedBuckets {
+        /// The count asked for.
+        m: usize,
+        /// The largest compiled count (the smallest is 1).
+        max: usize,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Parse(e) => e.fmt(f),
+            Error::UnsupportedBuckets { m, max } => {
+                write!(f, "expected a bucket count from 1 to {max}, found {m}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::Parse(e) => Some(e),
+            Error::UnsupportedBuckets { .. } => None,
+        }
+    }
+}
+
+impl From<ParseError> for Error {
+    fn from(e: ParseError) -> Self {
+        Error::Parse(e)
+    }
+}

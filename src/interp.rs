@@ -1,0 +1,292 @@
+//! Piecewise polynomials through tabulated samples.
+//!
+//! Segment `k` spans `[λₖ, λₖ₊₁]` and holds the coefficients `[c0, c1, c2, c3]`
+//! of `p(t) = c0 + c1·t + c2·t² + c3·t³` in the local variable `t = λ − λₖ`
+//! (nanometres). Linear interpolation uses the two end samples; the cubic uses
+//! the four nearest samples, two on each side, with the stencil shifted
+//! inwards at the ends of the table.
+//!
+//! Values are clamped to `bounds` (for example `[0, 1]` for a reflectance).
+//! The *breaks* of a table are its wavelengths plus every point where a
+//! segment's polynomial crosses a bound, so between two consecutive breaks the
+//! clamped function is a single polynomial and can be integrated exactly.
+//!
+//! This file depends on `std` only: `build.rs` includes it with `#[path]` to
+//! precompute the coefficients of the built-in data.
+//!
+//! ```
+//! use speclab::interp::{cubic_coeffs, eval};
+//! let lambda = [400.0, 410.0, 420.0, 430.0];
+//! let coeffs = cubic_coeffs(&lambda, &[1.0, 2.0, 3.0, 4.0]);
+//! let bounds = [f64::NEG_INFINITY, f64::INFINITY];
+//! assert!((eval(&lambda, &coeffs, bounds, 415.0) - 2.5).abs() < 1e-12);
+//! ```
+
+/// Coefficients of one segment, in `t = λ − λₖ`.
+pub type Coeffs = [f64; 4];
+
+/// Coefficients of the linear interpolant; needs at least 2 samples.
+pub fn linear_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
+    (0..lambda.len().saturating_sub(1))
+        .map(|k| {
+            let slope = (values[k + 1] - values[k]) / (lambda[k + 1] - lambda[k]);
+            [values[k], slope, 0.0, 0.0]
+        })
+        .collect()
+}
+
+/// Coefficients of the four-point piecewise cubic; needs at least 4 samples.
+pub fn cubic_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
+    let n = lambda.len();
+    if n < 4 {
+        return Vec::new();
+    }
+    (0..n - 1)
+        .map(|k| {
+            // Two samples on each side of the segment, shifted at the ends.
+            let s = k.saturating_sub(1).min(n - 4);
+            let u: [f64; 4] = std::array::from_fn(|j| lambda[s + j] - lambda[k]);
+            let y: [f64; 4] = std::array::from_fn(|j| values[s + j]);
+            newton_to_monomial(u, y)
+        })
+        .collect()
+}
+
+/// The cubic through `(u[j], y[j])`, in monomial form.
+fn newton_to_monomial(u: [f64; 4], y: [f64; 4]) -> Coeffs {
+    // Divided differences: d[j] = y[u0..uj].
+    let mut d = y;
+    for level in 1..4 {
+        for j in (level..4).rev() {
+            d[j] = (d[j] - d[j - 1]) / (u[j] - u[j - level]);
+        }
+    }
+    // Horner on the Newton form: p = d0 + (t−u0)(d1 + (t−u1)(d2 + (t−u2)d3)).
+    let mut p = [d[3], 0.0, 0.0, 0.0];
+    for j in (0..3).rev() {
+        // p ← p·(t − u[j]) + d[j]
+        let mut next = [0.0; 4];
+        for i in 0..4 {
+            if i + 1 < 4 {
+                next[i + 1] += p[i];
+            }
+            next[i] -= u[j] * p[i];
+        }
+        next[0] += d[j];
+        p = next;
+    }
+    p
+}
+
+/// The wavelengths plus every crossing of a finite bound, sorted.
+pub fn breaks(lambda: &[f64], coeffs: &[Coeffs], bounds: [f64; 2]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(lambda.len());
+    for (k, c) in coeffs.iter().enumerate() {
+        out.push(lambda[k]);
+        let h = lambda[k + 1] - lambda[k];
+        let mut crossings: Vec<f64> =
+            bounds.iter().filter(|b| b.is_finite()).flat_map(|&b| roots_in(*c, b, h)).collect();
+        crossings.sort_by(f64::total_cmp);
+        out.extend(crossings.into_iter().map(|t| lambda[k] + t));
+    }
+    out.extend(lambda.last());
+    out.dedup();
+    out
+}
+
+/// Points in `(0, h)` where `p(t) = level`, found by bisection on the
+/// monotone pieces between the critical points of `p`.
+fn roots_in(c: Coeffs, level: f64, h: f64) -> Vec<f64> {
+    let f = |t: f64| segment_value(c, t) - level;
+    let mut knots = vec![0.0];
+    // Critical points: roots of c1 + 2·c2·t + 3·c3·t².
+    let (a, b, cc) = (3.0 * c[3], 2.0 * c[2], c[1]);
+    if a != 0.0 {
+        let disc = b * b - 4.0 * a * cc;
+        if disc >= 0.0 {
+            let r = disc.sqrt();
+            knots.push((-b - r) / (2.0 * a));
+            knots.push((-b + r) / (2.0 * a));
+        }
+    } else if b != 0.0 {
+        knots.push(-cc / b);
+    }
+    knots.push(h);
+    knots.retain(|t| (0.0..=h).contains(t));
+    knots.sort_by(f64::total_cmp);
+    let mut roots = Vec::new();
+    for w in knots.windows(2) {
+        let (mut lo, mut hi) = (w[0], w[1]);
+        if f(lo) * f(hi) >= 0.0 {
+            continue;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if f(lo) * f(mid) <= 0.0 { hi = mid } else { lo = mid }
+        }
+        roots.push(0.5 * (lo + hi));
+    }
+    roots
+}
+
+/// `p(t)` by Horner's rule, unclamped.
+#[inline]
+pub const fn segment_value(c: Coeffs, t: f64) -> f64 {
+    c[0] + t * (c[1] + t * (c[2] + t * c[3]))
+}
+
+/// `x` limited to `[lo, hi]`; NaN stays NaN.
+#[inline]
+pub const fn clamp(x: f64, bounds: [f64; 2]) -> f64 {
+    if x < bounds[0] {
+        bounds[0]
+    } else if x > bounds[1] {
+        bounds[1]
+    } else {
+        x
+    }
+}
+
+/// Index `k` of the segment with `λₖ ≤ x`, for `x` inside the table.
+#[inline]
+pub const fn segment_of(lambda: &[f64], x: f64) -> usize {
+    let (mut lo, mut hi) = (0, lambda.len() - 1);
+    while hi - lo > 1 {
+        let mid = (lo + hi) / 2;
+        if lambda[mid] <= x { lo = mid } else { hi = mid }
+    }
+    lo
+}
+
+/// The clamped interpolant at `x`; zero outside `[λ₀, λₙ₋₁]` and for NaN.
+pub const fn eval(lambda: &[f64], coeffs: &[Coeffs], bounds: [f64; 2], x: f64) -> f64 {
+    let n = lambda.len();
+    if n < 2 || coeffs.len() + 1 != n || !(x >= lambda[0] && x <= lambda[n - 1]) {
+        return 0.0;
+    }
+    let k = segment_of(lambda, x);
+    clamp(segment_value(coeffs[k], x - lambda[k]), bounds)
+}
+
+/// `∫ p(t) dt` from `t0` to `t1`.
+const fn segment_integral(c: Coeffs, t0: f64, t1: f64) -> f64 {
+    primitive(c, t1) - primitive(c, t0)
+}
+
+/// `∫₀ᵗ p`, by Horner's rule.
+const fn primitive(c: Coeffs, t: f64) -> f64 {
+    t * (c[0] + t * (c[1] / 2.0 + t * (c[2] / 3.0 + t * c[3] / 4.0)))
+}
+
+/// Exact integral of the clamped interpolant over `[a, b]` (zero outside
+/// the table). `brk` must be the table's [`breaks`].
+pub const fn integral(
+    lambda: &[f64],
+    coeffs: &[Coeffs],
+    brk: &[f64],
+    bounds: [f64; 2],
+    a: f64,
+    b: f64,
+) -> f64 {
+    if lambda.len() < 2 || coeffs.len() + 1 != lambda.len() || a >= b || a.is_nan() || b.is_nan() {
+        return 0.0;
+    }
+    let mut sum = 0.0;
+    let mut i = 0;
+    while i + 1 < brk.len() {
+        let x0 = if brk[i] > a { brk[i] } else { a };
+        let x1 = if brk[i + 1] < b { brk[i + 1] } else { b };
+        if x0 < x1 {
+            let mid = 0.5 * (x0 + x1);
+            let k = segment_of(lambda, mid);
+            let c = coeffs[k];
+            let raw = segment_value(c, mid - lambda[k]);
+            sum += if raw < bounds[0] {
+                bounds[0] * (x1 - x0)
+            } else if raw > bounds[1] {
+                bounds[1] * (x1 - x0)
+            } else {
+                segment_integral(c, x0 - lambda[k], x1 - lambda[k])
+            };
+        }
+        i += 1;
+    }
+    sum
+}
+
+/// How a table is interpolated between its samples.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Interpolation {
+    /// Straight lines between samples; keeps spikes (F11) as tabulated.
+    Linear,
+    /// The cubic through the four nearest samples; smooth curves.
+    Cubic,
+}
+
+impl Interpolation {
+    /// The fewest samples this interpolation can use.
+    pub const fn min_samples(self) -> usize {
+        match self {
+            Interpolation::Linear => 2,
+            Interpolation::Cubic => 4,
+        }
+    }
+
+    /// The segment coefficients through `(lambda, values)`.
+    pub fn coeffs(self, lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
+        match self {
+            Interpolation::Linear => linear_coeffs(lambda, values),
+            Interpolation::Cubic => cubic_coeffs(lambda, values),
+        }
+    }
+}
+
+/// What a spectrum is; sets its default interpolation and its value bounds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Role {
+    /// Spectral power of a light, any non-negative scale. Linear, `≥ 0`.
+    Light,
+    /// Reflectance of a surface. Cubic, clamped to `[0, 1]`.
+    Reflectance,
+    /// A colour matching function. Cubic, clamped to `≥ 0`.
+    Observer,
+}
+
+impl Role {
+    /// The interpolation the assignment's reference uses for this role.
+    pub const fn interpolation(self) -> Interpolation {
+        match self {
+            Role::Light => Interpolation::Linear,
+            Role::Reflectance | Role::Observer => Interpolation::Cubic,
+        }
+    }
+
+    /// The interval that interpolated values are clamped to.
+    pub const fn bounds(self) -> [f64; 2] {
+        match self {
+            Role::Light | Role::Observer => [0.0, f64::INFINITY],
+            Role::Reflectance => [0.0, 1.0],
+        }
+    }
+}
+
+/// `1 / step` if the wavelengths are equidistant (to 1e-9 of a step), else 0.
+pub const fn uniform_inv_step(lambda: &[f64]) -> f64 {
+    let n = lambda.len();
+    if n < 2 {
+        return 0.0;
+    }
+    let step = (lambda[n - 1] - lambda[0]) / (n - 1) as f64;
+    let mut k = 0;
+    while k < n {
+        let d = lambda[k] - (lambda[0] + k as f64 * step);
+        if d.abs() > 1e-9 * step {
+            return 0.0;
+        }
+        k += 1;
+    }
+    1.0 / step
+}

@@ -1,0 +1,205 @@
+//! Tabulated spectra: samples plus an interpolant, evaluated at any wavelength.
+//!
+//! A [`TabulatedSpectrum`] holds wavelengths in nanometres (strictly
+//! increasing), a value at each, and the piecewise polynomial through them
+//! (see [`crate::interp`]). Its [`Role`] picks the interpolation and clamps
+//! the values: lights are linear and non-negative (to keep F11's spikes),
+//! reflectances are cubic and clamped to `[0, 1]`, matching functions are
+//! cubic and clamped to `≥ 0`.
+//!
+//! **Outside its support** (below the first or above the last wavelength) a
+//! spectrum is zero. The integration range of a product is therefore the
+//! common support of its factors: 380–730 nm for the appendix data.
+//!
+//! ```
+//! use speclab::{Role, TabulatedSpectrum};
+//! let light = TabulatedSpectrum::parse("{400, 1}, {500, 3}", "<string>", Role::Light)?;
+//! assert_eq!(light.eval(450.0), 2.0);
+//! assert_eq!(light.eval(390.0), 0.0); // outside the support
+//! assert_eq!(light.integral(400.0, 500.0), 200.0);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::borrow::Cow;
+
+use crate::Error;
+use crate::interp::{self, Coeffs, Interpolation, Role};
+use crate::parse::{self, ParseError, ParseErrorKind, Position};
+
+/// Samples of a spectrum and the interpolant through them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TabulatedSpectrum {
+    role: Role,
+    interpolation: Interpolation,
+    lambda: Cow<'static, [f64]>,
+    values: Cow<'static, [f64]>,
+    coeffs: Cow<'static, [Coeffs]>,
+    breaks: Cow<'static, [f64]>,
+    /// `1 / step` for equidistant tables (fast segment lookup), else 0.
+    inv_step: f64,
+}
+
+impl TabulatedSpectrum {
+    /// A spectrum over precomputed static tables (used by the generated data).
+    pub(crate) const fn from_static(
+        role: Role,
+        lambda: &'static [f64],
+        values: &'static [f64],
+        coeffs: &'static [Coeffs],
+        breaks: &'static [f64],
+    ) -> Self {
+        TabulatedSpectrum {
+            role,
+            interpolation: role.interpolation(),
+            lambda: Cow::Borrowed(lambda),
+            values: Cow::Borrowed(values),
+            coeffs: Cow::Borrowed(coeffs),
+            breaks: Cow::Borrowed(breaks),
+            inv_step: interp::uniform_inv_step(lambda),
+        }
+    }
+
+    /// A spectrum from samples, interpolated as its role prescribes.
+    ///
+    /// Errors name the offending sample by index (line `index + 1`, column 1,
+    /// origin `<samples>`) when a value is not finite, a wavelength does not
+    /// increase, the lengths differ, or there are too few samples.
+    pub fn new(lambda: Vec<f64>, values: Vec<f64>, role: Role) -> Result<Self, Error> {
+        Self::with_interpolation(lambda, values, role, role.interpolation())
+    }
+
+    /// Like [`TabulatedSpectrum::new`], with the interpolation stated explicitly.
+    pub fn with_interpolation(
+        lambda: Vec<f64>,
+        values: Vec<f64>,
+        role: Role,
+        interpolation: Interpolation,
+    ) -> Result<Self, Error> {
+        check(&lambda, &values, interpolation).map_err(|(index, kind)| {
+            let position = Position { line: index + 1, column: 1 };
+            Error::Parse(ParseError { origin: "<samples>".into(), position, kind })
+        })?;
+        Ok(Self::build(lambda, values, role, interpolation))
+    }
+
+    /// A spectrum from brace-notation text; `origin` names the text in errors.
+    pub fn parse(text: &str, origin: &str, role: Role) -> Result<Self, Error> {
+        let s = parse::parse_samples(text, origin)?;
+        check(&s.lambda, &s.values, role.interpolation()).map_err(|(index, kind)| {
+            let end = Position { line: 1, column: 1 };
+            let position = s.positions.get(index).copied().unwrap_or(end);
+            Error::Parse(ParseError { origin: origin.into(), position, kind })
+        })?;
+        Ok(Self::build(s.lambda, s.values, role, role.interpolation()))
+    }
+
+    fn build(lambda: Vec<f64>, values: Vec<f64>, role: Role, interpolation: Interpolation) -> Self {
+        let coeffs = interpolation.coeffs(&lambda, &values);
+        let breaks = interp::breaks(&lambda, &coeffs, role.bounds());
+        TabulatedSpectrum {
+            role,
+            interpolation,
+            inv_step: interp::uniform_inv_step(&lambda),
+            lambda: Cow::Owned(lambda),
+            values: Cow::Owned(values),
+            coeffs: Cow::Owned(coeffs),
+            breaks: Cow::Owned(breaks),
+        }
+    }
+
+    /// The value at `lambda` nm: the clamped interpolant inside the support,
+    /// zero outside it and for NaN.
+    #[inline]
+    #[must_use]
+    pub fn eval(&self, lambda: f64) -> f64 {
+        let x = &self.lambda;
+        let n = x.len();
+        if !(lambda >= x[0] && lambda <= x[n - 1]) {
+            return 0.0;
+        }
+        let k = if self.inv_step > 0.0 {
+            (((lambda - x[0]) * self.inv_step) as usize).min(n - 2)
+        } else {
+            interp::segment_of(x, lambda)
+        };
+        let v = interp::segment_value(self.coeffs[k], lambda - x[k]);
+        interp::clamp(v, self.role.bounds())
+    }
+
+    /// The exact integral of the spectrum over `[a, b]` nm.
+    #[must_use]
+    pub fn integral(&self, a: f64, b: f64) -> f64 {
+        let bounds = self.role.bounds();
+        interp::integral(&self.lambda, &self.coeffs, &self.breaks, bounds, a, b)
+    }
+
+    /// The exact mean of the spectrum over `[a, b]` nm.
+    #[must_use]
+    pub fn mean(&self, a: f64, b: f64) -> f64 {
+        self.integral(a, b) / (b - a)
+    }
+
+    /// The tabulated wavelengths, nm.
+    #[must_use]
+    pub fn lambda(&self) -> &[f64] {
+        &self.lambda
+    }
+
+    /// The tabulated values.
+    #[must_use]
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+
+    /// First and last tabulated wavelength, nm.
+    #[must_use]
+    pub fn support(&self) -> (f64, f64) {
+        (self.lambda[0], self.lambda[self.lambda.len() - 1])
+    }
+
+    /// What the spectrum is.
+    #[must_use]
+    pub fn role(&self) -> Role {
+        self.role
+    }
+
+    /// How it is interpolated.
+    #[must_use]
+    pub fn interpolation(&self) -> Interpolation {
+        self.interpolation
+    }
+
+    /// Wavelengths between which the spectrum is one polynomial: the samples
+    /// plus the points where the interpolant meets a clamp bound.
+    #[must_use]
+    pub fn breaks(&self) -> &[f64] {
+        &self.breaks
+    }
+}
+
+/// Checks samples; on failure gives the index of the offending sample.
+fn check(
+    lambda: &[f64],
+    values: &[f64],
+    interpolation: Interpolation,
+) -> Result<(), (usize, ParseErrorKind)> {
+    if lambda.len() != values.len() {
+        let kind = ParseErrorKind::Count { found: values.len(), expected: lambda.len() };
+        return Err((lambda.len().min(values.len()), kind));
+    }
+    for (i, (&x, &y)) in lambda.iter().zip(values).enumerate() {
+        if !x.is_finite() || !y.is_finite() {
+            let text = if x.is_finite() { y } else { x }.to_string();
+            return Err((i, ParseErrorKind::NonFinite { text }));
+        }
+        if i > 0 && x <= lambda[i - 1] {
+            return Err((i, ParseErrorKind::NotIncreasing { previous: lambda[i - 1], found: x }));
+        }
+    }
+    let needed = interpolation.min_samples();
+    if lambda.len() < needed {
+        let kind = ParseErrorKind::TooFew { found: lambda.len(), needed };
+        return Err((lambda.len().saturating_sub(1), kind));
+    }
+    Ok(())
+}
