@@ -118,7 +118,7 @@ fn write_table(out: &mut impl Write, grid: &Grid, rows: &[Row]) -> io::Result<()
             let head = ["patch", "method", "R", "G", "B", "Δ", "Δ%"];
             writeln!(
                 out,
-                "{:<5} {:<15} {:>10} {:>10} {:>10} {:>9} {:>7}",
+                "{:<5} {:<15} {:>10} {:>10} {:>10}  {:>9} {:>7}",
                 head[0], head[1], head[2], head[3], head[4], head[5], head[6]
             )?;
         }
@@ -140,7 +140,7 @@ fn write_table(out: &mut impl Write, grid: &Grid, rows: &[Row]) -> io::Result<()
             } else {
                 let d = rgb.distance(reference);
                 let len = reference.distance(LinearSrgb::default());
-                writeln!(out, "{d:>8.3} {:>6.2}%", 100.0 * d / len)?;
+                writeln!(out, " {d:>9.3} {:>6.2}%", 100.0 * d / len)?;
             }
         }
     }

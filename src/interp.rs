@@ -129,6 +129,8 @@ fn roots_in(c: Coeffs, level: f64, h: f64) -> Vec<f64> {
         }
         roots.push(0.5 * (lo + hi));
     }
+    // A root at an end is a knot, already a break.
+    roots.retain(|&t| t > 1e-9 * h && t < h * (1.0 - 1e-9));
     roots
 }
 
@@ -289,4 +291,68 @@ pub const fn uniform_inv_step(lambda: &[f64]) -> f64 {
         k += 1;
     }
     1.0 / step
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::data::{CIE_Z, CIE_Z_BREAKS, CIE_Z_COEFFS, CIE_Z_LAMBDA};
+
+    #[test]
+    fn cubic_reproduces_cubics_exactly() {
+        let f = |x: f64| 2.0 - 0.5 * x + 0.01 * x * x - 1e-4 * x * x * x;
+        let lambda = [0.0, 3.0, 7.0, 10.0, 12.0, 20.0];
+        let values = lambda.map(f);
+        let coeffs = cubic_coeffs(&lambda, &values);
+        let free = [f64::NEG_INFINITY, f64::INFINITY];
+        for i in 0..=200 {
+            let x = i as f64 * 0.1;
+            assert!((eval(&lambda, &coeffs, free, x) - f(x)).abs() < 1e-12, "at {x}");
+        }
+    }
+
+    #[test]
+    fn integral_is_exact_for_cubics() {
+        let lambda = [0.0, 1.0, 2.0, 3.0];
+        let coeffs = cubic_coeffs(&lambda, &[0.0, 1.0, 8.0, 27.0]); // x³
+        let free = [f64::NEG_INFINITY, f64::INFINITY];
+        let brk = breaks(&lambda, &coeffs, free);
+        assert!(
+            (integral(&lambda, &coeffs, &brk, free, 0.5, 2.5) - (2.5f64.powi(4) - 0.5f64.powi(4)) / 4.0)
+                .abs()
+                < 1e-12
+        );
+    }
+
+    /// Decision: matching functions are clamped at zero. The raw cubic of z̄
+    /// dips below zero between 630 and 635 nm (minimum −6.4e-6 at 632.1 nm);
+    /// the clamp keeps every sample's contribution physical and changes ∫z̄
+    /// (≈ 106.9 nm) by 2.1e-5 nm, 2e-7 of it.
+    #[test]
+    fn z_bar_dip_is_clamped_and_negligible() {
+        let free = [f64::NEG_INFINITY, f64::INFINITY];
+        let raw_min = (0..=4000)
+            .map(|i| 380.0 + i as f64 * 0.1)
+            .map(|x| eval(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, free, x))
+            .fold(f64::INFINITY, f64::min);
+        assert!(raw_min < 0.0, "the raw cubic dips: {raw_min}");
+        assert!((0..=4000).all(|i| CIE_Z.eval(380.0 + i as f64 * 0.1) >= 0.0));
+        let negative_part =
+            integral(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, &CIE_Z_BREAKS, [f64::NEG_INFINITY, 0.0], 380.0, 780.0);
+        assert!(negative_part < 0.0 && negative_part > -3e-5, "∫min(z̄, 0) = {negative_part}");
+        let total = CIE_Z.integral(380.0, 780.0);
+        assert!((total - 106.9).abs() < 0.5, "∫z̄ = {total}");
+        eprintln!("raw z̄ minimum {raw_min:e}, ∫min(z̄, 0) = {negative_part:e} nm");
+    }
+
+    #[test]
+    fn roots_split_clamped_pieces() {
+        // Cubic through 0, 1, 1, 0 on 0..30 exceeds 1 on the middle segment.
+        let lambda = [0.0, 10.0, 20.0, 30.0];
+        let coeffs = cubic_coeffs(&lambda, &[0.0, 1.0, 1.0, 0.0]);
+        let brk = breaks(&lambda, &coeffs, [0.0, 1.0]);
+        assert_eq!(brk, vec![0.0, 10.0, 20.0, 30.0], "crossings at the knots only");
+        let coeffs = cubic_coeffs(&lambda, &[0.0, 0.9, 0.95, 0.0]);
+        assert_eq!(breaks(&lambda, &coeffs, [0.0, 1.0]).len(), 6, "two crossings of 1 inside");
+    }
 }
