@@ -18,7 +18,7 @@
 //! ```
 
 use crate::TabulatedSpectrum;
-use crate::interp::Role;
+use crate::samples::Role;
 
 mod generated {
     use super::{Role, TabulatedSpectrum};

@@ -22,12 +22,22 @@
 //! assert!((eval(&lambda, &coeffs, bounds, 415.0) - 2.5).abs() < 1e-12);
 //! ```
 
+use crate::samples::Interpolation;
+
 /// Coefficients of one segment, in `t = λ − λₖ`.
 pub type Coeffs = [f64; 4];
 
+/// The segment coefficients of `interpolation` through `(lambda, values)`.
+pub fn coeffs(interpolation: Interpolation, lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
+    match interpolation {
+        Interpolation::Linear => linear_coeffs(lambda, values),
+        Interpolation::Cubic => cubic_coeffs(lambda, values),
+    }
+}
+
 /// Coefficients of the linear interpolant; needs at least 2 samples.
 pub fn linear_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
-    (0..lambda.len().saturating_sub(1))
+    (0..lambda.len().min(values.len()).saturating_sub(1))
         .map(|k| {
             let slope = (values[k + 1] - values[k]) / (lambda[k + 1] - lambda[k]);
             [values[k], slope, 0.0, 0.0]
@@ -37,7 +47,7 @@ pub fn linear_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
 
 /// Coefficients of the four-point piecewise cubic; needs at least 4 samples.
 pub fn cubic_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
-    let n = lambda.len();
+    let n = lambda.len().min(values.len());
     if n < 4 {
         return Vec::new();
     }
@@ -81,7 +91,7 @@ fn newton_to_monomial(u: [f64; 4], y: [f64; 4]) -> Coeffs {
 /// The wavelengths plus every crossing of a finite bound, sorted.
 pub fn breaks(lambda: &[f64], coeffs: &[Coeffs], bounds: [f64; 2]) -> Vec<f64> {
     let mut out = Vec::with_capacity(lambda.len());
-    for (k, c) in coeffs.iter().enumerate() {
+    for (k, c) in coeffs.iter().enumerate().take(lambda.len().saturating_sub(1)) {
         out.push(lambda[k]);
         let h = lambda[k + 1] - lambda[k];
         let mut crossings: Vec<f64> =
@@ -155,7 +165,7 @@ pub const fn clamp(x: f64, bounds: [f64; 2]) -> f64 {
 /// Index `k` of the segment with `λₖ ≤ x`, for `x` inside the table.
 #[inline]
 pub const fn segment_of(lambda: &[f64], x: f64) -> usize {
-    let (mut lo, mut hi) = (0, lambda.len() - 1);
+    let (mut lo, mut hi) = (0, lambda.len().saturating_sub(1));
     while hi - lo > 1 {
         let mid = (lo + hi) / 2;
         if lambda[mid] <= x { lo = mid } else { hi = mid }
@@ -217,62 +227,6 @@ pub const fn integral(
         i += 1;
     }
     sum
-}
-
-/// How a table is interpolated between its samples.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Interpolation {
-    /// Straight lines between samples; keeps spikes (F11) as tabulated.
-    Linear,
-    /// The cubic through the four nearest samples; smooth curves.
-    Cubic,
-}
-
-impl Interpolation {
-    /// The fewest samples this interpolation can use.
-    pub const fn min_samples(self) -> usize {
-        match self {
-            Interpolation::Linear => 2,
-            Interpolation::Cubic => 4,
-        }
-    }
-
-    /// The segment coefficients through `(lambda, values)`.
-    pub fn coeffs(self, lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
-        match self {
-            Interpolation::Linear => linear_coeffs(lambda, values),
-            Interpolation::Cubic => cubic_coeffs(lambda, values),
-        }
-    }
-}
-
-/// What a spectrum is; sets its default interpolation and its value bounds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Role {
-    /// Spectral power of a light, any non-negative scale. Linear, `≥ 0`.
-    Light,
-    /// Reflectance of a surface. Cubic, clamped to `[0, 1]`.
-    Reflectance,
-    /// A colour matching function. Cubic, clamped to `≥ 0`.
-    Observer,
-}
-
-impl Role {
-    /// The interpolation the assignment's reference uses for this role.
-    pub const fn interpolation(self) -> Interpolation {
-        match self {
-            Role::Light => Interpolation::Linear,
-            Role::Reflectance | Role::Observer => Interpolation::Cubic,
-        }
-    }
-
-    /// The interval that interpolated values are clamped to.
-    pub const fn bounds(self) -> [f64; 2] {
-        match self {
-            Role::Light | Role::Observer => [0.0, f64::INFINITY],
-            Role::Reflectance => [0.0, 1.0],
-        }
-    }
 }
 
 /// `1 / step` if the wavelengths are equidistant (to 1e-9 of a step), else 0.

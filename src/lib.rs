@@ -40,13 +40,14 @@ pub mod method;
 pub mod observer;
 pub mod parse;
 pub mod reference;
+pub mod samples;
 pub mod regular;
 pub mod spectrum;
 
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;
 pub use hero::{HeroSample, SampledSpectrum};
-pub use interp::{Interpolation, Role};
+pub use samples::{Interpolation, Role};
 pub use regular::{BoxAverage, Centre, RegularSpectrum};
 pub use spectrum::TabulatedSpectrum;
 

@@ -17,7 +17,8 @@ use crate::data::{
     CIE_X, CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z,
     CIE_Z_BREAKS, CIE_Z_COEFFS, CIE_Z_LAMBDA,
 };
-use crate::interp::{self, Role};
+use crate::interp;
+use crate::samples::Role;
 use crate::{LAMBDA_MIN, WIDTH, Xyz};
 
 /// `(x̄, ȳ, z̄)` at `lambda` nm; zero outside 380–780 nm.

@@ -74,6 +74,32 @@ pub enum ParseErrorKind {
         /// Tuples expected.
         expected: usize,
     },
+    /// A wavelength outside the plausible range of nanometres.
+    Wavelength {
+        /// The wavelength as read.
+        found: f64,
+    },
+    /// A light with negative power.
+    NegativePower {
+        /// The value as read.
+        value: f64,
+    },
+    /// A value outside the range its role allows.
+    OutOfRange {
+        /// The value as read.
+        value: f64,
+        /// Smallest allowed value.
+        min: f64,
+        /// Largest allowed value.
+        max: f64,
+    },
+    /// A spectrum that does not cover the integration range.
+    Support {
+        /// First and last wavelength found, nm.
+        found: [f64; 2],
+        /// The range it must cover, nm.
+        required: [f64; 2],
+    },
     /// Fewer tuples than needed.
     TooFew {
         /// Tuples found.
@@ -118,6 +144,25 @@ impl fmt::Display for ParseError {
             ParseErrorKind::Count { found, expected } => {
                 write!(f, "expected exactly {expected} tuples, found {found}")
             }
+            ParseErrorKind::Wavelength { found } => write!(
+                f,
+                "expected a wavelength in nanometres (100 to 10000), found {found} \
+                 (micrometres? multiply by 1000)"
+            ),
+            ParseErrorKind::NegativePower { value } => {
+                write!(f, "expected a non-negative light power, found {value}")
+            }
+            ParseErrorKind::OutOfRange { value, min, max } if max.is_finite() => {
+                write!(f, "expected a value in [{min}, {max}], found {value}")
+            }
+            ParseErrorKind::OutOfRange { value, min, .. } => {
+                write!(f, "expected a value of at least {min}, found {value}")
+            }
+            ParseErrorKind::Support { found, required } => write!(
+                f,
+                "expected samples covering {}-{} nm, found {}-{} nm",
+                required[0], required[1], found[0], found[1]
+            ),
             ParseErrorKind::TooFew { found, needed } => {
                 write!(f, "expected at least {needed} samples, found {found}")
             }

@@ -23,8 +23,9 @@
 use std::borrow::Cow;
 
 use crate::Error;
-use crate::interp::{self, Coeffs, Interpolation, Role};
-use crate::parse::{self, ParseError, ParseErrorKind, Position};
+use crate::interp::{self, Coeffs};
+use crate::parse::{ParseError, Position, Samples};
+use crate::samples::{self, Interpolation, Role};
 
 /// Samples of a spectrum and the interpolant through them.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,9 +62,9 @@ impl TabulatedSpectrum {
 
     /// A spectrum from samples, interpolated as its role prescribes.
     ///
-    /// Errors name the offending sample by index (line `index + 1`, column 1,
-    /// origin `<samples>`) when a value is not finite, a wavelength does not
-    /// increase, the lengths differ, or there are too few samples.
+    /// The samples are checked as [`crate::samples::validate`] describes;
+    /// errors name the offending sample by index (line `index + 1`, column 1,
+    /// origin `<samples>`). The spectrum is zero outside its samples.
     pub fn new(lambda: Vec<f64>, values: Vec<f64>, role: Role) -> Result<Self, Error> {
         Self::with_interpolation(lambda, values, role, role.interpolation())
     }
@@ -75,7 +76,7 @@ impl TabulatedSpectrum {
         role: Role,
         interpolation: Interpolation,
     ) -> Result<Self, Error> {
-        check(&lambda, &values, interpolation).map_err(|(index, kind)| {
+        samples::validate(&lambda, &values, role, interpolation).map_err(|(index, kind)| {
             let position = Position { line: index + 1, column: 1 };
             Error::Parse(ParseError { origin: "<samples>".into(), position, kind })
         })?;
@@ -84,17 +85,16 @@ impl TabulatedSpectrum {
 
     /// A spectrum from brace-notation text; `origin` names the text in errors.
     pub fn parse(text: &str, origin: &str, role: Role) -> Result<Self, Error> {
-        let s = parse::parse_samples(text, origin)?;
-        check(&s.lambda, &s.values, role.interpolation()).map_err(|(index, kind)| {
-            let end = Position { line: 1, column: 1 };
-            let position = s.positions.get(index).copied().unwrap_or(end);
-            Error::Parse(ParseError { origin: origin.into(), position, kind })
-        })?;
-        Ok(Self::build(s.lambda, s.values, role, role.interpolation()))
+        Ok(Self::from_samples(samples::read_brace(text, origin, role)?, role, role.interpolation()))
+    }
+
+    /// A spectrum from samples already validated for `role` and `interpolation`.
+    pub(crate) fn from_samples(s: Samples, role: Role, interpolation: Interpolation) -> Self {
+        Self::build(s.lambda, s.values, role, interpolation)
     }
 
     fn build(lambda: Vec<f64>, values: Vec<f64>, role: Role, interpolation: Interpolation) -> Self {
-        let coeffs = interpolation.coeffs(&lambda, &values);
+        let coeffs = interp::coeffs(interpolation, &lambda, &values);
         let breaks = interp::breaks(&lambda, &coeffs, role.bounds());
         TabulatedSpectrum {
             role,
@@ -175,31 +175,4 @@ impl TabulatedSpectrum {
     pub fn breaks(&self) -> &[f64] {
         &self.breaks
     }
-}
-
-/// Checks samples; on failure gives the index of the offending sample.
-fn check(
-    lambda: &[f64],
-    values: &[f64],
-    interpolation: Interpolation,
-) -> Result<(), (usize, ParseErrorKind)> {
-    if lambda.len() != values.len() {
-        let kind = ParseErrorKind::Count { found: values.len(), expected: lambda.len() };
-        return Err((lambda.len().min(values.len()), kind));
-    }
-    for (i, (&x, &y)) in lambda.iter().zip(values).enumerate() {
-        if !x.is_finite() || !y.is_finite() {
-            let text = if x.is_finite() { y } else { x }.to_string();
-            return Err((i, ParseErrorKind::NonFinite { text }));
-        }
-        if i > 0 && x <= lambda[i - 1] {
-            return Err((i, ParseErrorKind::NotIncreasing { previous: lambda[i - 1], found: x }));
-        }
-    }
-    let needed = interpolation.min_samples();
-    if lambda.len() < needed {
-        let kind = ParseErrorKind::TooFew { found: lambda.len(), needed };
-        return Err((lambda.len().saturating_sub(1), kind));
-    }
-    Ok(())
 }
