@@ -14,6 +14,7 @@
 //! ```
 
 use std::fmt;
+use std::path::PathBuf;
 
 use crate::parse::ParseError;
 
@@ -23,6 +24,13 @@ use crate::parse::ParseError;
 pub enum Error {
     /// Text or samples that do not form a valid spectrum.
     Parse(ParseError),
+    /// A file that could not be read.
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
     /// A bucket count with no compiled instance of `RegularSpectrum<M>`.
     UnsupportedBuckets {
         /// The count asked for.
@@ -36,6 +44,7 @@ impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Error::Parse(e) => e.fmt(f),
+            Error::Io { path, source } => write!(f, "{}: cannot read: {source}", path.display()),
             Error::UnsupportedBuckets { m, max } => {
                 write!(f, "expected a bucket count from 1 to {max}, found {m}")
             }
@@ -47,6 +56,7 @@ impl std::error::Error for Error {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
             Error::Parse(e) => Some(e),
+            Error::Io { source, .. } => Some(source),
             Error::UnsupportedBuckets { .. } => None,
         }
     }

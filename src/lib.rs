@@ -31,24 +31,27 @@
 pub struct ReadmeDoctests;
 
 pub mod color;
+pub mod columns;
 pub mod data;
 pub mod error;
 pub mod grid;
 pub mod hero;
 pub mod interp;
+pub mod json;
+pub mod load;
 pub mod method;
 pub mod observer;
 pub mod parse;
 pub mod reference;
-pub mod samples;
 pub mod regular;
+pub mod samples;
 pub mod spectrum;
 
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;
 pub use hero::{HeroSample, SampledSpectrum};
-pub use samples::{Interpolation, Role};
 pub use regular::{BoxAverage, Centre, RegularSpectrum};
+pub use samples::{Interpolation, Role};
 pub use spectrum::TabulatedSpectrum;
 
 /// Lower end of the integration and sampling range, nm.

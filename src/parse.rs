@@ -38,6 +38,18 @@ pub enum ParseErrorKind {
         /// What the grammar expected instead.
         expected: &'static str,
     },
+    /// An empty field where a number belongs.
+    Missing {
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// A key that the format does not have.
+    Key {
+        /// The key as written.
+        found: String,
+        /// The keys expected.
+        expected: &'static str,
+    },
     /// The text ended early.
     UnexpectedEnd {
         /// What the grammar expected instead.
@@ -128,6 +140,8 @@ impl fmt::Display for ParseError {
             ParseErrorKind::Unexpected { found, expected } => {
                 write!(f, "expected {expected}, found {found:?}")
             }
+            ParseErrorKind::Missing { expected } => write!(f, "expected {expected}, found nothing"),
+            ParseErrorKind::Key { found, expected } => write!(f, "expected {expected}, found {found:?}"),
             ParseErrorKind::UnexpectedEnd { expected } => {
                 write!(f, "expected {expected}, found end of text")
             }
@@ -136,13 +150,13 @@ impl fmt::Display for ParseError {
                 write!(f, "expected a finite number, found {text:?}")
             }
             ParseErrorKind::Arity { found, expected } => {
-                write!(f, "expected {expected} numbers in braces, found {found}")
+                write!(f, "expected {expected} numbers per entry, found {found}")
             }
             ParseErrorKind::NotIncreasing { previous, found } => {
                 write!(f, "expected a wavelength greater than {previous} nm, found {found} nm")
             }
             ParseErrorKind::Count { found, expected } => {
-                write!(f, "expected exactly {expected} tuples, found {found}")
+                write!(f, "expected {expected} entries, found {found}")
             }
             ParseErrorKind::Wavelength { found } => write!(
                 f,
@@ -179,6 +193,8 @@ pub struct Tuple<const N: usize> {
     pub numbers: [f64; N],
     /// Where the tuple starts.
     pub position: Position,
+    /// Where each number starts.
+    pub number_positions: [Position; N],
 }
 
 /// Tabulated samples read from a text: strictly increasing, finite.
@@ -188,8 +204,20 @@ pub struct Samples {
     pub lambda: Vec<f64>,
     /// The value at each wavelength.
     pub values: Vec<f64>,
-    /// Where each sample was written.
+    /// Where each sample (its wavelength) was written.
     pub positions: Vec<Position>,
+    /// Where each value was written.
+    pub value_positions: Vec<Position>,
+}
+
+impl Samples {
+    /// Appends one sample.
+    pub fn push(&mut self, lambda: f64, value: f64, at: Position, value_at: Position) {
+        self.lambda.push(lambda);
+        self.values.push(value);
+        self.positions.push(at);
+        self.value_positions.push(value_at);
+    }
 }
 
 /// Reads `{λ, v}` pairs and checks that every number is finite and the
@@ -204,9 +232,7 @@ pub fn parse_samples(text: &str, origin: &str) -> Result<Samples, ParseError> {
             let kind = ParseErrorKind::NotIncreasing { previous, found: lambda };
             return Err(ParseError { origin: origin.to_string(), position: tuple.position, kind });
         }
-        samples.lambda.push(lambda);
-        samples.values.push(value);
-        samples.positions.push(tuple.position);
+        samples.push(lambda, value, tuple.position, tuple.number_positions[1]);
     }
     Ok(samples)
 }
@@ -228,24 +254,37 @@ pub fn parse_tuples<const N: usize>(text: &str, origin: &str) -> Result<Vec<Tupl
     }
 }
 
+/// Reads one number token as written (`text`), with the error it deserves.
+pub fn number(text: &str, origin: &str, position: Position) -> Result<f64, ParseError> {
+    let error = |kind| ParseError { origin: origin.to_string(), position, kind };
+    if text.is_empty() {
+        return Err(error(ParseErrorKind::Missing { expected: "a number" }));
+    }
+    match text.parse::<f64>() {
+        Ok(x) if x.is_finite() => Ok(x),
+        Ok(_) => Err(error(ParseErrorKind::NonFinite { text: text.to_string() })),
+        Err(_) => Err(error(ParseErrorKind::BadNumber { text: text.to_string() })),
+    }
+}
+
 /// A character cursor that tracks lines and columns.
-struct Cursor<'a> {
+pub(crate) struct Cursor<'a> {
     chars: std::iter::Peekable<std::str::Chars<'a>>,
     origin: &'a str,
-    position: Position,
+    pub(crate) position: Position,
 }
 
 impl<'a> Cursor<'a> {
-    fn new(text: &'a str, origin: &'a str) -> Self {
+    pub(crate) fn new(text: &'a str, origin: &'a str) -> Self {
         let position = Position { line: 1, column: 1 };
         Cursor { chars: text.chars().peekable(), origin, position }
     }
 
-    fn peek(&mut self) -> Option<char> {
+    pub(crate) fn peek(&mut self) -> Option<char> {
         self.chars.peek().copied()
     }
 
-    fn bump(&mut self) -> Option<char> {
+    pub(crate) fn bump(&mut self) -> Option<char> {
         let c = self.chars.next()?;
         if c == '\n' {
             self.position.line += 1;
@@ -257,7 +296,7 @@ impl<'a> Cursor<'a> {
     }
 
     /// Skips whitespace and `#` comments.
-    fn skip_blank(&mut self) {
+    pub(crate) fn skip_blank(&mut self) {
         while let Some(c) = self.peek() {
             if c == '#' {
                 while self.peek().is_some_and(|c| c != '\n') {
@@ -271,11 +310,11 @@ impl<'a> Cursor<'a> {
         }
     }
 
-    fn error(&self, position: Position, kind: ParseErrorKind) -> ParseError {
+    pub(crate) fn error(&self, position: Position, kind: ParseErrorKind) -> ParseError {
         ParseError { origin: self.origin.to_string(), position, kind }
     }
 
-    fn expect(&mut self, wanted: char, expected: &'static str) -> Result<(), ParseError> {
+    pub(crate) fn expect(&mut self, wanted: char, expected: &'static str) -> Result<(), ParseError> {
         match self.peek() {
             Some(c) if c == wanted => {
                 self.bump();
@@ -290,12 +329,15 @@ impl<'a> Cursor<'a> {
         let position = self.position;
         self.expect('{', "'{' opening a tuple")?;
         let mut numbers = [0.0; N];
+        let mut number_positions = [position; N];
         let mut found = 0;
         loop {
             self.skip_blank();
+            let at = self.position;
             let number = self.number()?;
             if found < N {
                 numbers[found] = number;
+                number_positions[found] = at;
             }
             found += 1;
             self.skip_blank();
@@ -320,10 +362,10 @@ impl<'a> Cursor<'a> {
         if found != N {
             return Err(self.error(position, ParseErrorKind::Arity { found, expected: N }));
         }
-        Ok(Tuple { numbers, position })
+        Ok(Tuple { numbers, position, number_positions })
     }
 
-    fn number(&mut self) -> Result<f64, ParseError> {
+    pub(crate) fn number(&mut self) -> Result<f64, ParseError> {
         let position = self.position;
         let mut text = String::new();
         while let Some(c) = self.peek().filter(|c| c.is_ascii_alphanumeric() || "+-.".contains(*c)) {
@@ -338,10 +380,6 @@ impl<'a> Cursor<'a> {
                 None => self.error(position, ParseErrorKind::UnexpectedEnd { expected: "a number" }),
             });
         }
-        match text.parse::<f64>() {
-            Ok(x) if x.is_finite() => Ok(x),
-            Ok(_) => Err(self.error(position, ParseErrorKind::NonFinite { text })),
-            _ => Err(self.error(position, ParseErrorKind::BadNumber { text })),
-        }
+        number(&text, self.origin, position)
     }
 }

@@ -12,7 +12,7 @@
 //! use speclab::samples::{read_brace, Role};
 //! let err = read_brace("{380, 0.5}, {390, 1.5}, {400, 0.1}, {410, 0.2}", "patch.txt", Role::Reflectance)
 //!     .unwrap_err();
-//! assert_eq!(err.to_string(), "patch.txt:1:13: expected a value in [0, 1], found 1.5");
+//! assert_eq!(err.to_string(), "patch.txt:1:19: expected a value in [0, 1], found 1.5");
 //! ```
 
 use crate::parse::{ParseError, ParseErrorKind, Position, Samples, parse_samples};
@@ -69,57 +69,73 @@ impl Role {
     }
 }
 
-/// Checks samples; on failure gives the index of the offending sample.
+/// Which sample is invalid, whether the fault is its value (rather than its
+/// wavelength), and what is wrong.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Invalid {
+    /// Index of the sample.
+    pub index: usize,
+    /// True if the value is at fault, false for the wavelength.
+    pub on_value: bool,
+    /// What is wrong.
+    pub kind: ParseErrorKind,
+}
+
+/// Checks samples for `role` and `interpolation`.
 pub fn validate(
     lambda: &[f64],
     values: &[f64],
     role: Role,
     interpolation: Interpolation,
-) -> Result<(), (usize, ParseErrorKind)> {
+) -> Result<(), Invalid> {
+    let invalid = |index, on_value, kind| Err(Invalid { index, on_value, kind });
     if lambda.len() != values.len() {
         let kind = ParseErrorKind::Count { found: values.len(), expected: lambda.len() };
-        return Err((lambda.len().min(values.len()), kind));
+        return invalid(lambda.len().min(values.len()), true, kind);
     }
     for (i, (&x, &y)) in lambda.iter().zip(values).enumerate() {
-        check_sample(x, y, role).map_err(|kind| (i, kind))?;
+        if !x.is_finite() {
+            return invalid(i, false, ParseErrorKind::NonFinite { text: x.to_string() });
+        }
+        if !(PLAUSIBLE_NM[0]..=PLAUSIBLE_NM[1]).contains(&x) {
+            return invalid(i, false, ParseErrorKind::Wavelength { found: x });
+        }
         if i > 0 && x <= lambda[i - 1] {
-            return Err((i, ParseErrorKind::NotIncreasing { previous: lambda[i - 1], found: x }));
+            return invalid(i, false, ParseErrorKind::NotIncreasing { previous: lambda[i - 1], found: x });
+        }
+        if let Err(kind) = check_value(y, role) {
+            return invalid(i, true, kind);
         }
     }
     let needed = interpolation.min_samples();
     if lambda.len() < needed {
         let kind = ParseErrorKind::TooFew { found: lambda.len(), needed };
-        return Err((lambda.len().saturating_sub(1), kind));
+        return invalid(lambda.len().saturating_sub(1), false, kind);
     }
     Ok(())
 }
 
-fn check_sample(x: f64, y: f64, role: Role) -> Result<(), ParseErrorKind> {
-    if !x.is_finite() || !y.is_finite() {
-        let text = if x.is_finite() { y } else { x }.to_string();
-        return Err(ParseErrorKind::NonFinite { text });
-    }
-    if !(PLAUSIBLE_NM[0]..=PLAUSIBLE_NM[1]).contains(&x) {
-        return Err(ParseErrorKind::Wavelength { found: x });
-    }
+fn check_value(y: f64, role: Role) -> Result<(), ParseErrorKind> {
     let [min, max] = role.bounds();
-    if role == Role::Light && y < 0.0 {
-        return Err(ParseErrorKind::NegativePower { value: y });
+    if !y.is_finite() {
+        Err(ParseErrorKind::NonFinite { text: y.to_string() })
+    } else if role == Role::Light && y < 0.0 {
+        Err(ParseErrorKind::NegativePower { value: y })
+    } else if !(min..=max).contains(&y) {
+        Err(ParseErrorKind::OutOfRange { value: y, min, max })
+    } else {
+        Ok(())
     }
-    if !(min..=max).contains(&y) {
-        return Err(ParseErrorKind::OutOfRange { value: y, min, max });
-    }
-    Ok(())
 }
 
 /// Brace-notation text to validated samples, with errors at the place
-/// they apply (the sample's opening brace).
+/// they apply.
 pub fn read_brace(text: &str, origin: &str, role: Role) -> Result<Samples, ParseError> {
     let samples = parse_samples(text, origin)?;
     locate(samples, origin, role, role.interpolation())
 }
 
-/// Validates parsed samples, turning a sample index into its position.
+/// Validates parsed samples, turning an [`Invalid`] into a position.
 pub fn locate(
     samples: Samples,
     origin: &str,
@@ -128,9 +144,9 @@ pub fn locate(
 ) -> Result<Samples, ParseError> {
     match validate(&samples.lambda, &samples.values, role, interpolation) {
         Ok(()) => Ok(samples),
-        Err((index, kind)) => {
-            let start = Position { line: 1, column: 1 };
-            let position = samples.positions.get(index).copied().unwrap_or(start);
+        Err(Invalid { index, on_value, kind }) => {
+            let at = if on_value { &samples.value_positions } else { &samples.positions };
+            let position = at.get(index).copied().unwrap_or(Position { line: 1, column: 1 });
             Err(ParseError { origin: origin.to_string(), position, kind })
         }
     }

@@ -63,8 +63,8 @@ impl TabulatedSpectrum {
     /// A spectrum from samples, interpolated as its role prescribes.
     ///
     /// The samples are checked as [`crate::samples::validate`] describes;
-    /// errors name the offending sample by index (line `index + 1`, column 1,
-    /// origin `<samples>`). The spectrum is zero outside its samples.
+    /// errors name the offending sample by index (origin `<samples>`, line
+    /// `index + 1`, column 1 for its wavelength and 2 for its value). The spectrum is zero outside its samples.
     pub fn new(lambda: Vec<f64>, values: Vec<f64>, role: Role) -> Result<Self, Error> {
         Self::with_interpolation(lambda, values, role, role.interpolation())
     }
@@ -76,8 +76,9 @@ impl TabulatedSpectrum {
         role: Role,
         interpolation: Interpolation,
     ) -> Result<Self, Error> {
-        samples::validate(&lambda, &values, role, interpolation).map_err(|(index, kind)| {
-            let position = Position { line: index + 1, column: 1 };
+        samples::validate(&lambda, &values, role, interpolation).map_err(|e| {
+            let position = Position { line: e.index + 1, column: 1 + usize::from(e.on_value) };
+            let kind = e.kind;
             Error::Parse(ParseError { origin: "<samples>".into(), position, kind })
         })?;
         Ok(Self::build(lambda, values, role, interpolation))
