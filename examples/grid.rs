@@ -10,25 +10,30 @@ use std::io::{self, IsTerminal, Write};
 use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
-use speclab::grid::{Grid, Row, builtin_lights, builtin_surfaces};
+use speclab::grid::{Grid, Named, Row, builtin_lights, builtin_surfaces};
+use speclab::load::Load;
 use speclab::method::Method;
-use speclab::{LinearSrgb, reference};
+use speclab::{LinearSrgb, Role, TabulatedSpectrum, reference};
 
 const USAGE: &str = "\
-usage: grid [--n N] [--m M] [--seed S] [--csv]
-  --n N     samples for random and hero (default 100)
-  --m M     buckets for regular sampling, 1 to 64 (default 16)
-  --seed S  base seed of the random methods (default 1)
-  --csv     print light,surface,method,samples,x,y,z,r,g,b rows";
+usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-file PATH]
+  --n N                samples for random and hero (default 100)
+  --m M                buckets for regular sampling, 1 to 64 (default 16)
+  --seed S             base seed of the random methods (default 1)
+  --csv                print light,surface,method,samples,x,y,z,r,g,b rows
+  --light-file PATH    use this light instead of A, D65, F11 (brace, CSV/TSV or JSON)
+  --surface-file PATH  use this reflectance instead of the six patches";
 
 struct Args {
     grid: Grid,
     csv: bool,
+    light_file: Option<std::path::PathBuf>,
+    surface_file: Option<std::path::PathBuf>,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
     use lexopt::prelude::*;
-    let mut args = Args { grid: Grid::default(), csv: false };
+    let mut args = Args { grid: Grid::default(), csv: false, light_file: None, surface_file: None };
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
@@ -36,6 +41,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("m") => args.grid.m = parser.value()?.parse::<NonZeroUsize>()?,
             Long("seed") => args.grid.seed = parser.value()?.parse()?,
             Long("csv") => args.csv = true,
+            Long("light-file") => args.light_file = Some(parser.value()?.into()),
+            Long("surface-file") => args.surface_file = Some(parser.value()?.into()),
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);
@@ -54,7 +61,24 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let rows = match args.grid.rows(&builtin_lights(), &builtin_surfaces()) {
+    let light = args.light_file.as_deref().map(|p| (p, Load::new(Role::Light).file(p)));
+    let surface = args.surface_file.as_deref().map(|p| (p, Load::new(Role::Reflectance).file(p)));
+    let (light, surface) = match (transpose(light), transpose(surface)) {
+        (Ok(light), Ok(surface)) => (light, surface),
+        (Err(e), _) | (_, Err(e)) => {
+            eprintln!("grid: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let lights: Vec<Named> = match &light {
+        Some((name, spectrum)) => vec![Named { name, spectrum }],
+        None => builtin_lights(),
+    };
+    let surfaces: Vec<Named> = match &surface {
+        Some((name, spectrum)) => vec![Named { name, spectrum }],
+        None => builtin_surfaces(),
+    };
+    let rows = match args.grid.rows(&lights, &surfaces) {
         Ok(rows) => rows,
         Err(e) => {
             eprintln!("grid: {e}");
@@ -62,7 +86,7 @@ fn main() -> ExitCode {
         }
     };
     let out = &mut io::stdout().lock();
-    let result = if args.csv { write_csv(out, &rows) } else { write_table(out, &args.grid, &rows) };
+    let result = if args.csv { write_csv(out, &rows) } else { write_table(out, &args.grid, &lights, &rows) };
     match result {
         Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
             eprintln!("grid: {e}");
@@ -94,7 +118,16 @@ fn write_csv(out: &mut impl Write, rows: &[Row]) -> io::Result<()> {
     Ok(())
 }
 
-fn write_table(out: &mut impl Write, grid: &Grid, rows: &[Row]) -> io::Result<()> {
+/// A loaded file named by its stem, or the load error.
+fn transpose(
+    loaded: Option<(&std::path::Path, Result<TabulatedSpectrum, speclab::Error>)>,
+) -> Result<Option<(String, TabulatedSpectrum)>, speclab::Error> {
+    let Some((path, result)) = loaded else { return Ok(None) };
+    let name = path.file_stem().map_or_else(|| "file".into(), |s| s.to_string_lossy().into_owned());
+    Ok(Some((name, result?)))
+}
+
+fn write_table(out: &mut impl Write, grid: &Grid, lights: &[Named], rows: &[Row]) -> io::Result<()> {
     let colour = io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
     writeln!(out, "speclab grid: linear sRGB (unclamped) of light × patch, by method")?;
     writeln!(
@@ -111,7 +144,8 @@ fn write_table(out: &mut impl Write, grid: &Grid, rows: &[Row]) -> io::Result<()
     let mut previous_light = "";
     for chunk in rows.chunks(Method::ALL.len()) {
         let reference = chunk[0].xyz.to_linear_srgb();
-        let white = light_white_y(chunk[0].light);
+        let white =
+            lights.iter().find(|l| l.name == chunk[0].light).map_or(1.0, |l| reference::white(l.spectrum).y);
         if chunk[0].light != previous_light {
             previous_light = chunk[0].light;
             writeln!(out, "\nLight {previous_light}")?;
@@ -145,11 +179,6 @@ fn write_table(out: &mut impl Write, grid: &Grid, rows: &[Row]) -> io::Result<()
         }
     }
     Ok(())
-}
-
-/// Y of the perfect white under the named built-in light (swatch scale).
-fn light_white_y(name: &str) -> f64 {
-    speclab::data::Light::from_name(name).map_or(1.0, |l| reference::white(l.spectrum()).y)
 }
 
 /// Two truecolour cells showing `rgb` scaled so the light's white is 1.

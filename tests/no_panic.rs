@@ -1,0 +1,137 @@
+//! No input through the public API panics: every call returns a value or an
+//! error, as documented. Arbitrary text goes to every parser, arbitrary
+//! floats (NaN, ±∞, negative, huge) to every constructor and evaluator.
+
+use std::num::NonZeroUsize;
+
+use proptest::prelude::*;
+use speclab::load::{Format, Load};
+use speclab::method::Method;
+use speclab::{
+    BoxAverage, HeroSample, Interpolation, RegularSpectrum, Role, TabulatedSpectrum, data, interp,
+};
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        Just(f64::NAN),
+        Just(f64::INFINITY),
+        Just(f64::NEG_INFINITY),
+        Just(-0.0),
+        Just(f64::MAX),
+        Just(f64::MIN_POSITIVE),
+        any::<f64>(),
+        -1e3..1e3f64,
+        350.0..800.0f64,
+    ]
+}
+
+fn role() -> impl Strategy<Value = Role> {
+    prop_oneof![Just(Role::Light), Just(Role::Reflectance), Just(Role::Observer)]
+}
+
+/// Text that is often close to valid: pieces of the three grammars.
+fn spectrum_text() -> impl Strategy<Value = String> {
+    let piece = prop_oneof![
+        Just("{".to_string()),
+        Just("}".to_string()),
+        Just(", ".to_string()),
+        Just("\n".to_string()),
+        Just("\"wavelengths\": [".to_string()),
+        Just("\"values\": [".to_string()),
+        Just("]".to_string()),
+        Just("# c\n".to_string()),
+        Just("\t".to_string()),
+        "[0-9.eE+-]{1,8}",
+        any::<f64>().prop_map(|x| x.to_string()),
+        "\\PC{0,3}",
+    ];
+    prop::collection::vec(piece, 0..40).prop_map(|v| v.concat())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(512))]
+
+    #[test]
+    fn parsers_never_panic(text in prop_oneof![spectrum_text(), "\\PC*", any::<String>()], role in role()) {
+        let _ = speclab::parse::parse_samples(&text, "<string>");
+        let _ = speclab::parse::parse_tuples::<3>(&text, "<string>");
+        let _ = speclab::columns::parse_columns(&text, "<string>");
+        let _ = speclab::json::parse_json(&text, "<string>");
+        let _ = speclab::samples::read_brace(&text, "<string>", role);
+        let _ = TabulatedSpectrum::parse(&text, "<string>", role);
+        for format in [Format::Brace, Format::Json, Format::Columns] {
+            let _ = Load::new(role).with_format(format).text(&text, "<string>");
+        }
+        if let Ok(s) = Load::new(role).text(&text, "<string>") {
+            // Whatever loads evaluates and integrates without panicking.
+            prop_assert!(s.eval(555.0).is_finite());
+            let _ = s.integral(380.0, 730.0);
+        }
+    }
+
+    #[test]
+    fn constructors_take_any_floats(
+        lambda in prop::collection::vec(any_f64(), 0..12),
+        values in prop::collection::vec(any_f64(), 0..12),
+        role in role(),
+        cubic in any::<bool>(),
+    ) {
+        let interpolation = if cubic { Interpolation::Cubic } else { Interpolation::Linear };
+        if let Ok(s) = TabulatedSpectrum::with_interpolation(lambda.clone(), values.clone(), role, interpolation) {
+            for x in [f64::NAN, f64::NEG_INFINITY, 0.0, 380.0, 555.5, 730.0, 1e300] {
+                let _ = s.eval(x);
+            }
+            let _ = RegularSpectrum::<7, BoxAverage>::box_average(&s).to_xyz();
+            let _ = RegularSpectrum::<7>::centre(&s).to_xyz();
+            let _ = speclab::reference::xyz(&data::D65, &s);
+        }
+        // Raw interpolation helpers accept mismatched slices.
+        let coeffs = interp::cubic_coeffs(&lambda, &values);
+        let linear = interp::linear_coeffs(&lambda, &values);
+        let brk = interp::breaks(&lambda, &coeffs, [0.0, 1.0]);
+        let _ = interp::breaks(&lambda, &linear, [f64::NEG_INFINITY, f64::INFINITY]);
+        for x in [f64::NAN, 400.0, -1.0] {
+            let _ = interp::eval(&lambda, &coeffs, [0.0, 1.0], x);
+            let _ = interp::integral(&lambda, &coeffs, &brk, [0.0, 1.0], x, 500.0);
+        }
+        let _ = interp::segment_of(&lambda, 500.0);
+    }
+
+    #[test]
+    fn evaluators_take_any_floats(x in any_f64(), u in any_f64(), seed in any::<u64>()) {
+        for s in [&data::F11, &data::G4, &data::CIE_Z] {
+            let v = s.eval(x);
+            prop_assert!(v.is_finite() && v >= 0.0);
+        }
+        // Documented: only the fractional part of u counts; non-finite u acts as 0.
+        let h = HeroSample::<4>::new(u);
+        prop_assert!(h.lambda().iter().all(|l| (380.0..=730.0).contains(l)), "{:?}", h.lambda());
+        prop_assert!(h.to_xyz(data::F11.sample(&h) * data::A1.sample(&h)).is_finite());
+        let n = NonZeroUsize::MIN;
+        for method in Method::ALL {
+            prop_assert!(method.xyz(&data::A, &data::J4, n, seed).is_ok());
+        }
+    }
+
+    #[test]
+    fn bucket_counts_and_huge_values(m in any::<usize>(), scale in any_f64()) {
+        let m = NonZeroUsize::new(m).unwrap_or(NonZeroUsize::MIN);
+        let result = Method::RegularBox.xyz(&data::A, &data::E2, m, 0);
+        prop_assert_eq!(result.is_ok(), m.get() <= speclab::regular::MAX_BUCKETS);
+        if let Ok(light) = TabulatedSpectrum::new(vec![380.0, 730.0], vec![scale, scale], Role::Light) {
+            let _ = RegularSpectrum::<3>::centre(&light).to_xyz();
+            let _ = speclab::hero::estimate::<2, _>(&light, &data::A1, NonZeroUsize::MIN, &mut rand::rngs::StdRng::seed_from_u64(1));
+        }
+    }
+}
+
+use rand::SeedableRng;
+
+#[test]
+fn hero_u_outside_unit_interval_is_documented() {
+    assert_eq!(HeroSample::<4>::new(1.25), HeroSample::<4>::new(0.25));
+    assert_eq!(HeroSample::<4>::new(-0.25), HeroSample::<4>::new(0.75));
+    assert_eq!(HeroSample::<4>::new(f64::NAN), HeroSample::<4>::new(0.0));
+    assert_eq!(HeroSample::<4>::new(f64::INFINITY), HeroSample::<4>::new(0.0));
+    assert_eq!(HeroSample::<1>::new(1.0), HeroSample::<1>::new(0.0));
+}
