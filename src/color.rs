@@ -73,6 +73,18 @@ pub fn mul(m: &Matrix, v: [f64; 3]) -> [f64; 3] {
     m.map(|row| row[0] * v[0] + row[1] * v[1] + row[2] * v[2])
 }
 
+/// The inverse of `m` by cofactors (all zero if `m` is singular).
+#[must_use]
+pub fn inverse(m: &Matrix) -> Matrix {
+    let cof = |r: usize, c: usize| {
+        let (r1, r2, c1, c2) = ((r + 1) % 3, (r + 2) % 3, (c + 1) % 3, (c + 2) % 3);
+        m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]
+    };
+    let det = m[0][0] * cof(0, 0) + m[0][1] * cof(0, 1) + m[0][2] * cof(0, 2);
+    let scale = if det != 0.0 { 1.0 / det } else { 0.0 };
+    std::array::from_fn(|r| std::array::from_fn(|c| cof(c, r) * scale))
+}
+
 impl Add for Xyz {
     type Output = Xyz;
     #[inline]
@@ -142,5 +154,22 @@ impl LinearSrgb {
     pub fn distance(self, other: LinearSrgb) -> f64 {
         let d = [self.r - other.r, self.g - other.g, self.b - other.b];
         (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inverse_inverts() {
+        let m = XYZ_TO_SRGB;
+        let inv = inverse(&m);
+        for (i, row) in m.iter().enumerate() {
+            for j in 0..3 {
+                let p: f64 = (0..3).map(|k| row[k] * inv[k][j]).sum();
+                assert!((p - f64::from(u8::from(i == j))).abs() < 1e-12, "{i} {j}: {p}");
+            }
+        }
     }
 }

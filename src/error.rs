@@ -31,6 +31,17 @@ pub enum Error {
         /// Why.
         source: std::io::Error,
     },
+    /// A scale factor that is not finite and positive (for example the
+    /// normalisation of a light with no power in the range).
+    Scale {
+        /// The factor.
+        factor: f64,
+    },
+    /// A hero width with no compiled instance of `HeroSample<K>`.
+    UnsupportedHeroWidth {
+        /// The width asked for.
+        k: usize,
+    },
     /// A bucket count with no compiled instance of `RegularSpectrum<M>`.
     UnsupportedBuckets {
         /// The count asked for.
@@ -45,6 +56,10 @@ impl fmt::Display for Error {
         match self {
             Error::Parse(e) => e.fmt(f),
             Error::Io { path, source } => write!(f, "{}: cannot read: {source}", path.display()),
+            Error::Scale { factor } => write!(f, "expected a finite positive scale factor, found {factor}"),
+            Error::UnsupportedHeroWidth { k } => {
+                write!(f, "expected a hero width of 1, 2, 3, 4, 8 or 16 wavelengths, found {k}")
+            }
             Error::UnsupportedBuckets { m, max } => {
                 write!(f, "expected a bucket count from 1 to {max}, found {m}")
             }
@@ -57,7 +72,9 @@ impl std::error::Error for Error {
         match self {
             Error::Parse(e) => Some(e),
             Error::Io { source, .. } => Some(source),
-            Error::UnsupportedBuckets { .. } => None,
+            Error::Scale { .. } | Error::UnsupportedHeroWidth { .. } | Error::UnsupportedBuckets { .. } => {
+                None
+            }
         }
     }
 }

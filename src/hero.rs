@@ -141,3 +141,23 @@ pub fn estimate<const K: usize, R: Rng + ?Sized>(
     }
     sum / n.get() as f64
 }
+
+/// [`estimate`] for a hero width `k` known only at run time: dispatches to
+/// `HeroSample<K>` for K in 1, 2, 3, 4, 8 and 16, an error otherwise.
+pub fn estimate_dyn<R: Rng + ?Sized>(
+    k: usize,
+    light: &TabulatedSpectrum,
+    surface: &TabulatedSpectrum,
+    n: NonZeroUsize,
+    rng: &mut R,
+) -> Result<Xyz, crate::Error> {
+    Ok(match k {
+        1 => estimate::<1, R>(light, surface, n, rng),
+        2 => estimate::<2, R>(light, surface, n, rng),
+        3 => estimate::<3, R>(light, surface, n, rng),
+        4 => estimate::<4, R>(light, surface, n, rng),
+        8 => estimate::<8, R>(light, surface, n, rng),
+        16 => estimate::<16, R>(light, surface, n, rng),
+        _ => return Err(crate::Error::UnsupportedHeroWidth { k }),
+    })
+}

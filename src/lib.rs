@@ -42,10 +42,14 @@ pub mod load;
 pub mod method;
 pub mod observer;
 pub mod parse;
+pub mod perceptual;
 pub mod reference;
 pub mod regular;
+pub mod remarks;
 pub mod samples;
 pub mod spectrum;
+pub mod study;
+pub mod variance;
 
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;

@@ -127,6 +127,15 @@ impl TabulatedSpectrum {
         interp::clamp(v, self.role.bounds())
     }
 
+    /// The spectrum times `factor` (finite and positive; otherwise an error).
+    pub fn scaled(&self, factor: f64) -> Result<Self, Error> {
+        if !(factor.is_finite() && factor > 0.0) {
+            return Err(Error::Scale { factor });
+        }
+        let values: Vec<f64> = self.values.iter().map(|v| v * factor).collect();
+        Self::with_interpolation(self.lambda.to_vec(), values, self.role, self.interpolation)
+    }
+
     /// The exact integral of the spectrum over `[a, b]` nm.
     #[must_use]
     pub fn integral(&self, a: f64, b: f64) -> f64 {
