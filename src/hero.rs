@@ -142,8 +142,11 @@ pub fn estimate<const K: usize, R: Rng + ?Sized>(
     sum / n.get() as f64
 }
 
+/// The hero widths K that [`estimate_dyn`] dispatches to compiled instances.
+pub const WIDTHS: [usize; 6] = [1, 2, 3, 4, 8, 16];
+
 /// [`estimate`] for a hero width `k` known only at run time: dispatches to
-/// `HeroSample<K>` for K in 1, 2, 3, 4, 8 and 16, an error otherwise.
+/// `HeroSample<K>` for K in [`WIDTHS`], an error otherwise.
 pub fn estimate_dyn<R: Rng + ?Sized>(
     k: usize,
     light: &TabulatedSpectrum,

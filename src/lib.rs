@@ -34,6 +34,8 @@ pub mod color;
 pub mod columns;
 pub mod data;
 pub mod error;
+#[doc(hidden)]
+pub mod fuzzing;
 pub mod grid;
 pub mod hero;
 pub mod interp;

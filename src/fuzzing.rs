@@ -1,0 +1,25 @@
+//! The body of the parser fuzz target (`fuzz/fuzz_targets/parsers.rs`),
+//! kept here so that `tests/fuzz_regressions.rs` replays saved inputs
+//! through exactly the same calls. Not part of the stable API.
+
+use crate::load::{Format, Load};
+use crate::{Role, columns, data, json, parse, reference};
+
+/// Feeds `data` to every run-time parser and evaluates whatever loads.
+/// Panics only on a bug: a parser panicking, or a loaded spectrum that
+/// evaluates to a non-finite value.
+pub fn parsers(data: &[u8]) {
+    let Ok(text) = std::str::from_utf8(data) else { return };
+    let _ = parse::parse_samples(text, "<fuzz>");
+    let _ = parse::parse_tuples::<3>(text, "<fuzz>");
+    let _ = columns::parse_columns(text, "<fuzz>");
+    let _ = json::parse_json(text, "<fuzz>");
+    let _ = Format::detect(text);
+    for role in [Role::Light, Role::Reflectance, Role::Observer] {
+        if let Ok(s) = Load::new(role).text(text, "<fuzz>") {
+            assert!(s.eval(555.0).is_finite(), "loaded spectrum is not finite at 555 nm");
+            let _ = s.integral(380.0, 730.0);
+            let _ = reference::xyz(&data::D65, &s);
+        }
+    }
+}
