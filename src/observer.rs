@@ -22,10 +22,22 @@ use crate::samples::Role;
 use crate::{LAMBDA_MIN, WIDTH, Xyz};
 
 /// `(x̄, ȳ, z̄)` at `lambda` nm; zero outside 380–780 nm.
+///
+/// The three tables share one wavelength grid (checked in the tests), so the
+/// segment is found once for all three.
 #[inline]
 #[must_use]
 pub fn xyz_bar(lambda: f64) -> Xyz {
-    Xyz::new(CIE_X.eval(lambda), CIE_Y.eval(lambda), CIE_Z.eval(lambda))
+    const N: usize = CIE_Y_LAMBDA.len();
+    const FIRST: f64 = CIE_Y_LAMBDA[0];
+    const INV_STEP: f64 = (N - 1) as f64 / (CIE_Y_LAMBDA[N - 1] - FIRST);
+    if !(lambda >= FIRST && lambda <= CIE_Y_LAMBDA[N - 1]) {
+        return Xyz::ZERO;
+    }
+    let k = (((lambda - FIRST) * INV_STEP) as usize).min(N - 2);
+    let t = lambda - CIE_Y_LAMBDA[k];
+    let at = |c: &[[f64; 4]]| interp::clamp(interp::segment_value(c[k], t), BOUNDS);
+    Xyz::new(at(&CIE_X_COEFFS), at(&CIE_Y_COEFFS), at(&CIE_Z_COEFFS))
 }
 
 const BOUNDS: [f64; 2] = Role::Observer.bounds();
@@ -61,4 +73,22 @@ pub(crate) const fn box_buckets<const M: usize>() -> [Xyz; M] {
         i += 1;
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::data::{CIE_X, CIE_Y, CIE_Z};
+
+    #[test]
+    fn fused_lookup_equals_separate_evaluation() {
+        assert_eq!(CIE_X_LAMBDA, CIE_Y_LAMBDA);
+        assert_eq!(CIE_Z_LAMBDA, CIE_Y_LAMBDA);
+        for i in 0..=8000 {
+            let lambda = 370.0 + i as f64 * 0.05;
+            let separate = Xyz::new(CIE_X.eval(lambda), CIE_Y.eval(lambda), CIE_Z.eval(lambda));
+            assert_eq!(xyz_bar(lambda), separate, "at {lambda}");
+        }
+        assert_eq!(xyz_bar(f64::NAN), Xyz::ZERO);
+    }
 }
