@@ -14,8 +14,8 @@
 //! ```
 
 use crate::data::{
-    CIE_X, CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z,
-    CIE_Z_BREAKS, CIE_Z_COEFFS, CIE_Z_LAMBDA,
+    CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,
+    CIE_Z_COEFFS, CIE_Z_LAMBDA,
 };
 use crate::interp;
 use crate::samples::Role;
@@ -31,7 +31,7 @@ pub fn xyz_bar(lambda: f64) -> Xyz {
     const N: usize = CIE_Y_LAMBDA.len();
     const FIRST: f64 = CIE_Y_LAMBDA[0];
     const INV_STEP: f64 = (N - 1) as f64 / (CIE_Y_LAMBDA[N - 1] - FIRST);
-    if !(lambda >= FIRST && lambda <= CIE_Y_LAMBDA[N - 1]) {
+    if !(FIRST..=CIE_Y_LAMBDA[N - 1]).contains(&lambda) {
         return Xyz::ZERO;
     }
     let k = (((lambda - FIRST) * INV_STEP) as usize).min(N - 2);
