@@ -147,30 +147,21 @@ fn main() -> ExitCode {
     }
 }
 
+/// bias X, Y, Z; sd X, Y, Z; RMS and p95 ΔE00.
+fn numbers(r: &Row) -> [f64; 8] {
+    let (b, s) = (r.stats.bias, r.stats.sd);
+    [b.x, b.y, b.z, s.x, s.y, s.z, r.stats.rms_de00, r.stats.p95_de00]
+}
+
 fn write_csv(out: &mut impl Write, rows: &[Row]) -> io::Result<()> {
     writeln!(
         out,
         "light,surface,method,samples,trials,bias_x,bias_y,bias_z,sd_x,sd_y,sd_z,rms_de00,p95_de00"
     )?;
     for r in rows {
-        let (b, s) = (r.stats.bias, r.stats.sd);
-        writeln!(
-            out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
-            r.light,
-            r.surface,
-            r.method.name(),
-            r.samples,
-            r.stats.trials,
-            b.x,
-            b.y,
-            b.z,
-            s.x,
-            s.y,
-            s.z,
-            r.stats.rms_de00,
-            r.stats.p95_de00
-        )?;
+        let numbers: Vec<String> = numbers(r).iter().map(f64::to_string).collect();
+        let head = format!("{},{},{},{},{}", r.light, r.surface, r.method.name(), r.samples, r.stats.trials);
+        writeln!(out, "{head},{}", numbers.join(","))?;
     }
     Ok(())
 }
@@ -181,33 +172,18 @@ fn write_table(out: &mut impl Write, rows: &[Row], args: &Args) -> io::Result<()
         out,
         "evals = wavelength evaluations per estimate; bias and sd in XYZ; ΔE00 against the exact reference"
     )?;
+    let heads = ["bias X", "bias Y", "bias Z", "sd X", "sd Y", "sd Z", "rms ΔE", "p95 ΔE"];
     let mut previous = (String::new(), String::new(), None);
     for r in rows {
         let key = (r.light.clone(), r.surface.clone(), Some(r.method));
         if key != previous {
             writeln!(out, "\n{} × {}: {}", r.light, r.surface, r.method.name())?;
-            writeln!(
-                out,
-                "{:>7} {:>7} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>8} {:>8}",
-                "samples", "evals", "bias X", "bias Y", "bias Z", "sd X", "sd Y", "sd Z", "rms ΔE", "p95 ΔE"
-            )?;
+            let heads: String = heads.iter().map(|h| format!(" {h:>10}")).collect();
+            writeln!(out, "{:>7} {:>7}{heads}", "samples", "evals")?;
             previous = key;
         }
-        let (b, s) = (r.stats.bias, r.stats.sd);
-        writeln!(
-            out,
-            "{:>7} {:>7} {:>10.4} {:>10.4} {:>10.4} {:>10.4} {:>10.4} {:>10.4} {:>8.3} {:>8.3}",
-            r.samples,
-            evaluations(r.method, r.samples),
-            b.x,
-            b.y,
-            b.z,
-            s.x,
-            s.y,
-            s.z,
-            r.stats.rms_de00,
-            r.stats.p95_de00
-        )?;
+        let cells: String = numbers(r).iter().map(|v| format!(" {v:>10.4}")).collect();
+        writeln!(out, "{:>7} {:>7}{cells}", r.samples, evaluations(r.method, r.samples))?;
     }
     Ok(())
 }

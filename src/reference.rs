@@ -47,13 +47,12 @@ pub fn xyz_of_product(factors: &[&TabulatedSpectrum]) -> Xyz {
     let all = || factors.iter().copied().chain(cmfs);
     let a = all().map(|s| s.support().0).fold(f64::NEG_INFINITY, f64::max);
     let b = all().map(|s| s.support().1).fold(f64::INFINITY, f64::min);
-    if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+    if a >= b || a.is_nan() || b.is_nan() {
         return Xyz::ZERO;
     }
-    let mut breaks: Vec<f64> =
-        all().flat_map(|s| s.breaks().iter().copied()).filter(|&x| x > a && x < b).chain([a, b]).collect();
-    breaks.sort_by(f64::total_cmp);
-    breaks.dedup();
+    let breaks = sorted_unique(
+        all().flat_map(|s| s.breaks().iter().copied()).filter(|&x| x > a && x < b).chain([a, b]),
+    );
     let mut sum = Xyz::ZERO;
     for w in breaks.windows(2) {
         let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
@@ -65,4 +64,12 @@ pub fn xyz_of_product(factors: &[&TabulatedSpectrum]) -> Xyz {
         }
     }
     sum
+}
+
+/// `points` sorted, without repeats: the ends of the pieces to integrate.
+pub(crate) fn sorted_unique(points: impl Iterator<Item = f64>) -> Vec<f64> {
+    let mut v: Vec<f64> = points.collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup();
+    v
 }

@@ -25,6 +25,16 @@
 //! ```compile_fail
 //! let empty = speclab::RegularSpectrum::<0>::centre(&speclab::data::D65);
 //! ```
+//!
+//! Centre and box values are different types and cannot be multiplied
+//! together (their products would be converted with the wrong c̄ᵢ):
+//!
+//! ```compile_fail
+//! use speclab::{data, RegularSpectrum, BoxAverage, Centre};
+//! let light = RegularSpectrum::<16, Centre>::centre(&data::D65);
+//! let surface = RegularSpectrum::<16, BoxAverage>::box_average(&data::A1);
+//! let mixed = light * surface;
+//! ```
 
 use std::marker::PhantomData;
 use std::ops::Mul;

@@ -44,15 +44,14 @@ pub fn hero<const K: usize>(light: &TabulatedSpectrum, surface: &TabulatedSpectr
         sum
     };
     // Breaks of every factor, folded into the first period.
-    let mut breaks: Vec<f64> = [light, surface, &CIE_X, &CIE_Y, &CIE_Z]
-        .iter()
-        .flat_map(|s| s.breaks().iter().copied())
-        .filter(|b| (LAMBDA_MIN..=LAMBDA_MIN + WIDTH).contains(b))
-        .map(|b| LAMBDA_MIN + (b - LAMBDA_MIN) % period)
-        .chain([LAMBDA_MIN, LAMBDA_MIN + period])
-        .collect();
-    breaks.sort_by(f64::total_cmp);
-    breaks.dedup();
+    let breaks = reference::sorted_unique(
+        [light, surface, &CIE_X, &CIE_Y, &CIE_Z]
+            .iter()
+            .flat_map(|s| s.breaks().iter().copied())
+            .filter(|b| (LAMBDA_MIN..=LAMBDA_MIN + WIDTH).contains(b))
+            .map(|b| LAMBDA_MIN + (b - LAMBDA_MIN) % period)
+            .chain([LAMBDA_MIN, LAMBDA_MIN + period]),
+    );
     let mut second = Xyz::ZERO;
     for w in breaks.windows(2) {
         let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));

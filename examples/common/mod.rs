@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use speclab::data::{Light, Patch};
 use speclab::load::Load;
+use speclab::remarks::Normalization;
 use speclab::{Role, TabulatedSpectrum};
 
 /// A spectrum chosen on the command line: a built-in name or a file.
@@ -45,4 +46,11 @@ impl Choice {
 pub fn fail(program: &str, message: impl std::fmt::Display) -> std::process::ExitCode {
     eprintln!("{program}: {message}");
     std::process::ExitCode::from(2)
+}
+
+/// The `--normalize` value, or a message naming the choices.
+#[allow(dead_code)] // converge has no --normalize
+pub fn normalization(name: &str) -> Result<Normalization, String> {
+    Normalization::from_name(name)
+        .ok_or_else(|| format!("unknown normalisation {name:?}: expected none, power or luminance"))
 }
