@@ -80,12 +80,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             }
             Long("seed") => a.seed = parser.value()?.parse()?,
             Long("trials") => a.trials = parser.value()?.parse()?,
-            Long("normalize") => {
-                let name = parser.value()?.string()?;
-                a.normalize = Normalization::from_name(&name).ok_or_else(|| {
-                    format!("unknown normalisation {name:?}: expected none, power or luminance")
-                })?;
-            }
+            Long("normalize") => a.normalize = common::normalization(&parser.value()?.string()?)?,
             Long("white-balance") => a.white_balance = true,
             Short('h') | Long("help") => {
                 println!("{USAGE}");

@@ -60,12 +60,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("csv") => args.csv = true,
             Long("light-file") => args.lights = vec![Choice::File(parser.value()?.into())],
             Long("surface-file") => args.surfaces = vec![Choice::File(parser.value()?.into())],
-            Long("normalize") => {
-                let name = parser.value()?.string()?;
-                args.normalize = Normalization::from_name(&name).ok_or_else(|| {
-                    format!("unknown normalisation {name:?}: expected none, power or luminance")
-                })?;
-            }
+            Long("normalize") => args.normalize = common::normalization(&parser.value()?.string()?)?,
             Long("white-balance") => args.white_balance = true,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
