@@ -158,42 +158,43 @@ fn main() -> ExitCode {
         Ok(s) => s,
         Err(e) => return fail("compare", e),
     };
-    match run(&args, (&light.0, &scaled), (&surface.0, &surface.1)) {
-        Err(e) => fail("compare", e),
-        Ok(()) => ExitCode::SUCCESS,
+    let lines = match run(&args, (&light.0, &scaled), (&surface.0, &surface.1)) {
+        Ok(lines) => lines,
+        Err(e) => return fail("compare", e),
+    };
+    let out = &mut io::stdout().lock();
+    match lines.iter().try_for_each(|line| writeln!(out, "{line}")) {
+        Err(e) if e.kind() != io::ErrorKind::BrokenPipe => fail("compare", e),
+        _ => ExitCode::SUCCESS,
     }
 }
 
+/// The table's lines: a header, column names, and one line per technique.
 fn run(
     a: &Args,
     light: (&str, &TabulatedSpectrum),
     surface: (&str, &TabulatedSpectrum),
-) -> Result<(), Error> {
+) -> Result<Vec<String>, Error> {
     // White balance maps the light's white to D65's; Lab is taken relative
     // to whichever white the colours end up under.
     let adapt = |xyz: Xyz| if a.white_balance { remarks::white_balance(xyz, light.1) } else { xyz };
     let white = if a.white_balance { remarks::target_white(light.1) } else { reference::white(light.1) };
     let exact = adapt(reference::xyz(light.1, surface.1));
-    let out = &mut io::stdout().lock();
-    let mut print = |text: String| match writeln!(out, "{text}") {
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
-        other => other,
-    };
-    let header = format!(
-        "{} × {}; normalise: {}; white balance: {}; seed {}; RMS over {} trials",
-        light.0,
-        surface.0,
-        a.normalize.name(),
-        if a.white_balance { "Bradford to D65" } else { "off" },
-        a.seed,
-        a.trials
-    );
-    let columns = format!(
-        "{:<18} {:>6} {:>11} {:>11} {:>11}  {:>6} {:>8} {:>8}",
-        "technique", "evals", "R", "G", "B", "gamut", "ΔE00", "RMS ΔE00"
-    );
-    io_ok(print(header))?;
-    io_ok(print(columns))?;
+    let balance = if a.white_balance { "Bradford to D65" } else { "off" };
+    let mut lines = vec![
+        format!(
+            "{} × {}; normalise: {}; white balance: {balance}; seed {}; RMS over {} trials",
+            light.0,
+            surface.0,
+            a.normalize.name(),
+            a.seed,
+            a.trials
+        ),
+        format!(
+            "{:<18} {:>6} {:>11} {:>11} {:>11}  {:>6} {:>8} {:>8}",
+            "technique", "evals", "R", "G", "B", "gamut", "ΔE00", "RMS ΔE00"
+        ),
+    ];
     for t in techniques(a, light.1, surface.1) {
         let xyz = adapt((t.estimate)(a.seed)?);
         let trials = if t.random { a.trials } else { NonZeroUsize::MIN };
@@ -201,20 +202,10 @@ fn run(
         let rgb = xyz.to_linear_srgb();
         let gamut = if rgb.in_gamut() { "in" } else { "OUT" };
         let de = perceptual::delta_e00(xyz, exact, white);
-        let line = format!(
+        lines.push(format!(
             "{:<18} {:>6} {:>11.4} {:>11.4} {:>11.4}  {:>6} {:>8.3} {:>8.3}",
             t.label, t.evals, rgb.r, rgb.g, rgb.b, gamut, de, stats.rms_de00
-        );
-        io_ok(print(line))?;
+        ));
     }
-    Ok(())
-}
-
-/// Output errors other than a closed pipe are reported on stderr; the
-/// computation itself has already succeeded.
-fn io_ok(result: io::Result<()>) -> Result<(), Error> {
-    if let Err(e) = result {
-        eprintln!("compare: {e}");
-    }
-    Ok(())
+    Ok(lines)
 }

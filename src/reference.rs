@@ -17,7 +17,7 @@
 //! ```
 
 use crate::data::{CIE_X, CIE_Y, CIE_Z};
-use crate::{TabulatedSpectrum, Xyz};
+use crate::{TabulatedSpectrum, Xyz, observer};
 
 /// Gauss–Legendre nodes and weights on `[-1, 1]`, 5 points (exact to degree 9).
 const GAUSS_5: [(f64, f64); 5] = [
@@ -59,8 +59,7 @@ pub fn xyz_of_product(factors: &[&TabulatedSpectrum]) -> Xyz {
         for (node, weight) in GAUSS_5 {
             let lambda = mid + half * node;
             let f: f64 = factors.iter().map(|s| s.eval(lambda)).product();
-            let cmf = Xyz::new(CIE_X.eval(lambda), CIE_Y.eval(lambda), CIE_Z.eval(lambda));
-            sum += cmf * (f * weight * half);
+            sum += observer::xyz_bar(lambda) * (f * weight * half);
         }
     }
     sum

@@ -16,7 +16,7 @@
 //! ```
 
 use crate::data::{CIE_X, CIE_Y, CIE_Z};
-use crate::{LAMBDA_MIN, TabulatedSpectrum, WIDTH, Xyz, reference};
+use crate::{LAMBDA_MIN, TabulatedSpectrum, WIDTH, Xyz, observer, reference};
 
 /// Gauss–Legendre on `[-1, 1]`, 8 points (exact to degree 15): (node, weight).
 const GAUSS_8: [(f64, f64); 4] = [
@@ -38,8 +38,7 @@ pub fn hero<const K: usize>(light: &TabulatedSpectrum, surface: &TabulatedSpectr
             if x > LAMBDA_MIN + WIDTH {
                 x -= WIDTH;
             }
-            let cmf = Xyz::new(CIE_X.eval(x), CIE_Y.eval(x), CIE_Z.eval(x));
-            sum += cmf * (light.eval(x) * surface.eval(x));
+            sum += observer::xyz_bar(x) * (light.eval(x) * surface.eval(x));
         }
         sum
     };
