@@ -2,24 +2,25 @@
 //! kept here so that `tests/fuzz_regressions.rs` replays saved inputs
 //! through exactly the same calls. Not part of the stable API.
 
-use crate::load::{Format, Load};
-use crate::{Role, columns, data, json, parse, reference};
+use crate::io::{Format, Load, brace, columns, json};
+use crate::sampling::reference;
+use crate::{Role, data};
 
 /// Feeds `data` to every run-time parser and evaluates whatever loads.
 /// Panics only on a bug: a parser panicking, or a loaded spectrum that
-/// evaluates to a non-finite value.
+/// evaluates or integrates to a non-finite value.
 pub fn parsers(data: &[u8]) {
     let Ok(text) = std::str::from_utf8(data) else { return };
-    let _ = parse::parse_samples(text, "<fuzz>");
-    let _ = parse::parse_tuples::<3>(text, "<fuzz>");
+    let _ = brace::parse_samples(text, "<fuzz>");
+    let _ = brace::parse_rows::<3>(text, "<fuzz>", 3);
     let _ = columns::parse_columns(text, "<fuzz>");
     let _ = json::parse_json(text, "<fuzz>");
     let _ = Format::detect(text);
     for role in [Role::Light, Role::Reflectance, Role::Observer] {
         if let Ok(s) = Load::new(role).text(text, "<fuzz>") {
             assert!(s.eval(555.0).is_finite(), "loaded spectrum is not finite at 555 nm");
-            let _ = s.integral(380.0, 730.0);
-            let _ = reference::xyz(&data::D65, &s);
+            assert!(s.integral(380.0, 730.0).is_finite(), "loaded spectrum has a non-finite integral");
+            assert!(reference::xyz(&data::D65, &s).is_finite(), "non-finite reference");
         }
     }
 }

@@ -1,27 +1,40 @@
 //! # speclab: light–surface arithmetic for spectral rendering
 //!
 //! Spectra of lights and surfaces, their point-wise product, its conversion
-//! to CIE XYZ and linear sRGB, and three ways of sampling wavelengths with
-//! a known cost and error, checked against an exact reference.
+//! to CIE XYZ and linear sRGB, and ways of sampling wavelengths with a known
+//! cost and error, checked against an exact reference.
 //!
 //! Three nouns (see `ARCHITECTURE.md`):
 //! - a continuous spectrum, [`TabulatedSpectrum`], evaluated at any
-//!   wavelength in nanometres;
-//! - a set of wavelengths: a [`HeroSample<K>`] (random) or the `M` buckets of
-//!   a [`RegularSpectrum<M>`] (fixed);
-//! - the values at them: [`SampledSpectrum<K>`] or the buckets' values.
+//!   wavelength in nanometres ([`spectrum`]);
+//! - a set of wavelengths: a [`HeroSample<K>`] (random, with a pdf each) or
+//!   the `M` buckets of a [`RegularSpectrum<M>`] (fixed) ([`sampling`]);
+//! - the values at them: [`SampledSpectrum<K>`] or the buckets' values,
+//!   turned into [`Xyz`] and [`LinearSrgb`] ([`color`]).
+//!
+//! Spectra are read by [`io`] at run time, or turned into static data at
+//! compile time by [`codegen`] (the built-in data, [`data`], is made so).
+//! The accuracy study ([`study`]: trials, ΔE00, the comparison grid) is
+//! behind the default feature `study`; a renderer can leave it out with
+//! `default-features = false`, which leaves `rand` as the only dependency.
+//!
+//! A renderer's inner loop, per sample:
 //!
 //! ```
-//! use rand::{SeedableRng, rngs::StdRng};
-//! use speclab::{data, hero, reference, RegularSpectrum};
-//! let exact = reference::xyz(&data::D65, &data::F4).to_linear_srgb();
-//! let n = std::num::NonZeroUsize::new(100).unwrap();
-//! let mut rng = StdRng::seed_from_u64(1);
-//! let by_hero = hero::estimate::<4, _>(&data::D65, &data::F4, n, &mut rng).to_linear_srgb();
-//! let buckets = RegularSpectrum::<16>::centre(&data::D65) * RegularSpectrum::centre(&data::F4);
-//! let by_buckets = buckets.to_xyz().to_linear_srgb();
-//! assert!((exact.g - 24.67).abs() < 0.01);
-//! assert!(by_hero.distance(exact) < 5.0 && by_buckets.distance(exact) < 5.0);
+//! use speclab::{data, HeroSample, SampledSpectrum, Xyz};
+//! let mut pixel = Xyz::ZERO;
+//! for i in 0..64 {
+//!     let h = HeroSample::<4>::new((i as f64 + 0.5) / 64.0);
+//!     let (le, albedo) = (data::D65.sample(&h), data::F4.sample(&h));
+//!     let (mut beta, mut l) = (SampledSpectrum::splat(1.0), SampledSpectrum::zero());
+//!     for _bounce in 0..2 {
+//!         beta *= albedo; // reflect off the patch
+//!         l += beta * le; // and see the light
+//!     }
+//!     pixel += h.to_xyz(l);
+//! }
+//! let pixel = pixel / 64.0;
+//! assert!(pixel.y > 0.0 && pixel.to_linear_srgb().g > pixel.to_linear_srgb().r);
 //! ```
 
 #![warn(missing_docs)]
@@ -30,39 +43,18 @@
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+pub mod codegen;
 pub mod color;
-pub mod columns;
-pub mod data;
 pub mod error;
 #[doc(hidden)]
 pub mod fuzzing;
-pub mod grid;
-pub mod hero;
-pub mod interp;
-pub mod json;
-pub mod load;
-pub mod method;
-pub mod observer;
-pub mod parse;
-pub mod perceptual;
-pub mod reference;
-pub mod regular;
-pub mod remarks;
-pub mod samples;
+pub mod io;
+pub mod sampling;
 pub mod spectrum;
+#[cfg(feature = "study")]
 pub mod study;
-pub mod variance;
 
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;
-pub use hero::{HeroSample, SampledSpectrum};
-pub use regular::{BoxAverage, Centre, RegularSpectrum};
-pub use samples::{Interpolation, Role};
-pub use spectrum::TabulatedSpectrum;
-
-/// Lower end of the integration and sampling range, nm.
-pub const LAMBDA_MIN: f64 = 380.0;
-/// Upper end of the integration and sampling range, nm.
-pub const LAMBDA_MAX: f64 = 730.0;
-/// Width W of the range, nm.
-pub const WIDTH: f64 = LAMBDA_MAX - LAMBDA_MIN;
+pub use sampling::{BoxAverage, Centre, HeroSample, RegularSpectrum, SampledSpectrum};
+pub use spectrum::{Interpolation, LAMBDA_MAX, LAMBDA_MIN, Role, TabulatedSpectrum, WIDTH, data};

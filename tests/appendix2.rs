@@ -5,7 +5,7 @@
 //! have two decimals (±0.005) and come from Mathematica's own quadrature.
 
 use speclab::data::{Light, Patch};
-use speclab::reference;
+use speclab::sampling::reference;
 
 /// Absolute part of the tolerance: twice the rounding of two printed decimals.
 const TOL_ABS: f64 = 0.01;

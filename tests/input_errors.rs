@@ -1,7 +1,10 @@
 //! Every validation error names the place: origin, line and column, what
 //! was found and what was expected. One test per case, in every format.
 
-use speclab::load::{Format, Load};
+use std::io::Read as _;
+
+use speclab::io::{Format, Load, read};
+use speclab::spectrum::validate::{Field, Invalid, MAX_VALUE, SampleError};
 use speclab::{Error, Interpolation, Role, TabulatedSpectrum};
 
 /// Loads `text` as `role` and returns the error message.
@@ -154,5 +157,50 @@ fn formats_are_detected_from_content() {
 fn vector_constructor_names_the_index() {
     let err =
         TabulatedSpectrum::new(vec![380.0, 500.0, 730.0], vec![1.0, -2.0, 1.0], Role::Light).unwrap_err();
-    assert_eq!(err.to_string(), "<samples>:2:2: expected a non-negative light power, found -2");
+    assert_eq!(err.to_string(), "values[1]: expected a non-negative light power, found -2");
+    let Error::Sample(SampleError { index, field, problem }) = err else { panic!("a sample error: {err:?}") };
+    assert_eq!((index, field, problem), (1, Field::Value, Invalid::NegativePower { value: -2.0 }));
+    let err = TabulatedSpectrum::new(vec![380.0, f64::NAN], vec![1.0, 1.0], Role::Light).unwrap_err();
+    assert_eq!(err.to_string(), "lambda[1]: expected a finite number, found NaN");
+    let err = TabulatedSpectrum::new(vec![380.0, 730.0], vec![1.0], Role::Light).unwrap_err();
+    assert_eq!(err.to_string(), "values: expected 2 values, one per wavelength, found 1");
+    let err = TabulatedSpectrum::new(vec![380.0, 500.0, 730.0], vec![0.1; 3], Role::Reflectance).unwrap_err();
+    assert_eq!(err.to_string(), "lambda: expected at least 4 samples, found 3");
+}
+
+/// Finite but huge values would overflow the integrals (`{390, 1e308}` once
+/// printed inf and NaN in every cell): rejected where they are written.
+#[test]
+fn values_too_large_for_finite_integrals() {
+    assert_eq!(
+        error("{380, 1}, {390, 1e308}, {730, 1}", Role::Light),
+        "in.txt:1:17: expected a value of magnitude at most 1e100, found 1e308"
+    );
+    let err = TabulatedSpectrum::new(vec![380.0, 730.0], vec![1.0, 2e100], Role::Light).unwrap_err();
+    assert_eq!(err.to_string(), "values[1]: expected a value of magnitude at most 1e100, found 2e100");
+    assert!(TabulatedSpectrum::new(vec![380.0, 730.0], vec![1.0, MAX_VALUE], Role::Light).is_ok());
+    let light = TabulatedSpectrum::new(vec![380.0, 730.0], vec![1.0, 1e99], Role::Light).expect("valid");
+    assert!(matches!(light.scaled(100.0), Err(Error::Sample(_))), "scaling past the limit is refused too");
+}
+
+/// `--light-file /dev/zero` once grew to 5 GB: reading stops past the limit.
+#[test]
+fn endless_stream_is_refused() {
+    let endless = std::io::repeat(b'0');
+    let err = Load::new(Role::Light).reader(endless, "/dev/zero").unwrap_err();
+    assert!(matches!(err, Error::TooLarge { limit, .. } if limit == read::MAX_BYTES));
+    assert_eq!(err.to_string(), "/dev/zero: expected at most 67108864 bytes (64 MiB), found more");
+    let small = read::text(std::io::repeat(b' ').take(10), "<stream>", 10).expect("exactly at the limit");
+    assert_eq!(small.len(), 10);
+    assert!(matches!(
+        read::text(std::io::repeat(b' ').take(11), "<stream>", 10),
+        Err(Error::TooLarge { .. })
+    ));
+}
+
+#[test]
+fn binary_input_is_an_io_error() {
+    let err = Load::new(Role::Light).reader(&[0xff, 0xfe, b'1'][..], "lamp.bin").unwrap_err();
+    assert!(matches!(err, Error::Io { .. }), "{err:?}");
+    assert!(err.to_string().starts_with("lamp.bin: cannot read:"), "{err}");
 }

@@ -5,11 +5,11 @@
 use std::num::NonZeroUsize;
 
 use proptest::prelude::*;
-use speclab::load::{Format, Load};
-use speclab::method::Method;
-use speclab::{
-    BoxAverage, HeroSample, Interpolation, RegularSpectrum, Role, TabulatedSpectrum, data, interp,
-};
+use rand::SeedableRng;
+use speclab::io::{Format, Load, brace, columns, json, read};
+use speclab::sampling::regular::{self, Rule};
+use speclab::sampling::{hero, reference};
+use speclab::{BoxAverage, HeroSample, Interpolation, RegularSpectrum, Role, TabulatedSpectrum, data};
 
 fn any_f64() -> impl Strategy<Value = f64> {
     prop_oneof![
@@ -53,11 +53,11 @@ proptest! {
 
     #[test]
     fn parsers_never_panic(text in prop_oneof![spectrum_text(), "\\PC*", any::<String>()], role in role()) {
-        let _ = speclab::parse::parse_samples(&text, "<string>");
-        let _ = speclab::parse::parse_tuples::<3>(&text, "<string>");
-        let _ = speclab::columns::parse_columns(&text, "<string>");
-        let _ = speclab::json::parse_json(&text, "<string>");
-        let _ = speclab::samples::read_brace(&text, "<string>", role);
+        let _ = brace::parse_samples(&text, "<string>");
+        let _ = brace::parse_rows::<3>(&text, "<string>", 3);
+        let _ = columns::parse_columns(&text, "<string>");
+        let _ = json::parse_json(&text, "<string>");
+        let _ = read::samples(&text, "<string>", role, role.interpolation(), None);
         let _ = TabulatedSpectrum::parse(&text, "<string>", role);
         for format in [Format::Brace, Format::Json, Format::Columns] {
             let _ = Load::new(role).with_format(format).text(&text, "<string>");
@@ -83,18 +83,17 @@ proptest! {
             }
             let _ = RegularSpectrum::<7, BoxAverage>::box_average(&s).to_xyz();
             let _ = RegularSpectrum::<7>::centre(&s).to_xyz();
-            let _ = speclab::reference::xyz(&data::D65, &s);
+            let _ = reference::xyz(&data::D65, &s);
+            let _ = s.mean(555.0, 555.0);
         }
-        // Raw interpolation helpers accept mismatched slices.
-        let coeffs = interp::cubic_coeffs(&lambda, &values);
-        let linear = interp::linear_coeffs(&lambda, &values);
-        let brk = interp::breaks(&lambda, &coeffs, [0.0, 1.0]);
-        let _ = interp::breaks(&lambda, &linear, [f64::NEG_INFINITY, f64::INFINITY]);
-        for x in [f64::NAN, 400.0, -1.0] {
-            let _ = interp::eval(&lambda, &coeffs, [0.0, 1.0], x);
-            let _ = interp::integral(&lambda, &coeffs, &brk, [0.0, 1.0], x, 500.0);
+        let mut pdf = values.clone();
+        pdf.resize(4, 1.0);
+        let mut wavelengths = lambda.clone();
+        wavelengths.resize(4, 500.0);
+        let four = |v: &[f64]| [v[0], v[1], v[2], v[3]];
+        if let Ok(h) = HeroSample::with_pdf(four(&wavelengths), four(&pdf)) {
+            prop_assert!(h.to_xyz(data::D65.sample(&h)).y.is_finite());
         }
-        let _ = interp::segment_of(&lambda, 500.0);
     }
 
     #[test]
@@ -107,25 +106,29 @@ proptest! {
         let h = HeroSample::<4>::new(u);
         prop_assert!(h.lambda().iter().all(|l| (380.0..=730.0).contains(l)), "{:?}", h.lambda());
         prop_assert!(h.to_xyz(data::F11.sample(&h) * data::A1.sample(&h)).is_finite());
-        let n = NonZeroUsize::MIN;
-        for method in Method::ALL {
-            prop_assert!(method.xyz(&data::A, &data::J4, n, seed).is_ok());
+        let mut terminated = h;
+        terminated.terminate_secondary();
+        prop_assert!(terminated.to_xyz(data::F11.sample(&h) * data::A1.sample(&h)).is_finite());
+        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+        for k in [0, 1, 4, 5, usize::MAX] {
+            let result = hero::estimate_dyn(k, &data::A, &data::J4, NonZeroUsize::MIN, &mut rng);
+            prop_assert_eq!(result.is_ok(), hero::WIDTHS.contains(&k));
         }
     }
 
     #[test]
     fn bucket_counts_and_huge_values(m in any::<usize>(), scale in any_f64()) {
         let m = NonZeroUsize::new(m).unwrap_or(NonZeroUsize::MIN);
-        let result = Method::RegularBox.xyz(&data::A, &data::E2, m, 0);
-        prop_assert_eq!(result.is_ok(), m.get() <= speclab::regular::MAX_BUCKETS);
+        for rule in [Rule::Centre, Rule::BoxAverage] {
+            let result = regular::xyz_dyn(m.get(), rule, &data::A, &data::E2);
+            prop_assert_eq!(result.is_ok(), m.get() <= regular::MAX_BUCKETS);
+        }
         if let Ok(light) = TabulatedSpectrum::new(vec![380.0, 730.0], vec![scale, scale], Role::Light) {
             let _ = RegularSpectrum::<3>::centre(&light).to_xyz();
-            let _ = speclab::hero::estimate::<2, _>(&light, &data::A1, NonZeroUsize::MIN, &mut rand::rngs::StdRng::seed_from_u64(1));
+            let _ = hero::estimate::<2, _>(&light, &data::A1, NonZeroUsize::MIN, &mut rand::rngs::StdRng::seed_from_u64(1));
         }
     }
 }
-
-use rand::SeedableRng;
 
 #[test]
 fn hero_u_outside_unit_interval_is_documented() {

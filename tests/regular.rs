@@ -2,8 +2,9 @@
 //! the compile-time observer tables equal to the run-time definitions.
 
 use speclab::data::{CIE_X, CIE_Y, CIE_Z, Light, Patch};
-use speclab::regular::{self, Rule};
-use speclab::{BoxAverage, Centre, RegularSpectrum, Xyz, observer};
+use speclab::sampling::regular::{self, Rule};
+use speclab::spectrum::observer;
+use speclab::{BoxAverage, Centre, RegularSpectrum, Xyz};
 
 /// Sums are rearranged (the library multiplies per bucket, then scales):
 /// allow f64 rounding only.

@@ -1,13 +1,16 @@
 //! Each method tested exactly where it fails. Every test states what it pins
 //! down and why; the figures in comments come from the test's own output
 //! (`cargo test --release --test stability -- --nocapture`).
+#![cfg(feature = "study")]
 
 use std::num::NonZeroUsize;
 
+use speclab::Xyz;
 use speclab::data::{Light, Patch};
-use speclab::method::{Method, derive_seed};
-use speclab::regular::{self, Rule};
-use speclab::{Xyz, perceptual, reference, study, variance};
+use speclab::sampling::reference;
+use speclab::sampling::regular::{self, Rule};
+use speclab::study::method::{Method, derive_seed};
+use speclab::study::{perceptual, trials, variance};
 
 fn nz(n: usize) -> NonZeroUsize {
     NonZeroUsize::new(n).expect("non-zero")
@@ -107,7 +110,7 @@ fn spread_matches_theory() {
         for patch in Patch::ALL {
             let (l, s) = (light.spectrum(), patch.spectrum());
             for (method, var) in
-                [(Method::Random, variance::hero::<1>(l, s)), (Method::Hero, variance::hero::<4>(l, s))]
+                [(Method::Random, variance::hero::<1>(l, s)), (Method::HERO, variance::hero::<4>(l, s))]
             {
                 let runs: Vec<Xyz> =
                     (0..TRIALS).map(|t| method.xyz(l, s, nz(1), derive_seed(11, t)).expect("xyz")).collect();
@@ -174,8 +177,8 @@ fn gamut_flag_agrees_with_reference() {
     for (light, patch) in cells {
         let (l, s) = (light.spectrum(), patch.spectrum());
         assert!(!reference::xyz(l, s).to_linear_srgb().in_gamut(), "{light:?} {patch:?}");
-        for (method, bound) in [(Method::Hero, 0.80), (Method::Random, 0.65)] {
-            let stats = study::method(l, s, method, nz(100), nz(2000), 5).expect("study");
+        for (method, bound) in [(Method::HERO, 0.80), (Method::Random, 0.65)] {
+            let stats = trials::method(l, s, method, nz(100), nz(2000), 5).expect("study");
             let agree = 1.0 - stats.false_in_gamut.expect("reference out of gamut");
             eprintln!(
                 "{light:?} {patch:?} {method:?}: gamut flag agrees in {:.1} % of trials",

@@ -1,17 +1,20 @@
 //! Determinism and thread safety: the same seed gives bit-identical results,
 //! and the grid computed from several threads at once equals the grid
 //! computed on one.
+#![cfg(feature = "study")]
 
 use std::num::NonZeroUsize;
 
 use rand::SeedableRng;
 use rand::rngs::StdRng;
-use speclab::grid::{Grid, builtin_lights, builtin_surfaces};
-use speclab::{data, hero};
+use speclab::data;
+use speclab::sampling::hero;
+use speclab::study::grid::Grid;
+use speclab::study::scene::{builtin_lights, builtin_surfaces};
 use static_assertions::assert_impl_all;
 
 assert_impl_all!(speclab::TabulatedSpectrum: Send, Sync);
-assert_impl_all!(speclab::grid::Row<'static>: Send, Sync);
+assert_impl_all!(speclab::study::grid::Row<'static>: Send, Sync);
 
 #[test]
 fn same_seed_same_bits() {

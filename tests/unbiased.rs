@@ -6,12 +6,13 @@
 //! error derived from the spread of the estimates. With 18 cells × 2 methods
 //! × 3 channels = 108 checks, a correct estimator fails one at 4.5σ with
 //! probability below 1e-3; the seeds are fixed, so the run is repeatable.
+#![cfg(feature = "study")]
 
 use std::num::NonZeroUsize;
 
 use speclab::data::{Light, Patch};
-use speclab::method::{Method, derive_seed};
-use speclab::reference;
+use speclab::sampling::reference;
+use speclab::study::method::{Method, derive_seed};
 
 const TRIALS: usize = 2000;
 const N: usize = 8;
@@ -24,7 +25,7 @@ fn random_and_hero_are_unbiased() {
     for light in Light::ALL {
         for patch in Patch::ALL {
             let exact = reference::xyz(light.spectrum(), patch.spectrum()).to_array();
-            for method in [Method::Random, Method::Hero] {
+            for method in [Method::Random, Method::HERO] {
                 let estimates: Vec<[f64; 3]> = (0..TRIALS as u64)
                     .map(|t| {
                         let seed = derive_seed(0xB1A5, t);

@@ -1,0 +1,14 @@
+//! Spectra compiled into this program by `build.rs`, used like speclab's own
+//! built-in data.
+
+use speclab::TabulatedSpectrum;
+use speclab::sampling::reference;
+
+include!(concat!(env!("OUT_DIR"), "/spectra.rs"));
+
+fn main() {
+    let leaf: &'static TabulatedSpectrum = &LEAF;
+    let rgb = reference::xyz(&LED, leaf).to_linear_srgb();
+    println!("leaf under a white LED, linear sRGB: {:.3} {:.3} {:.3}", rgb.r, rgb.g, rgb.b);
+    assert!(rgb.g > rgb.r && rgb.g > rgb.b, "a leaf is green");
+}

@@ -1,0 +1,52 @@
+//! 3×3 matrices as plain data, row-major, acting on column vectors.
+//!
+//! ```
+//! use speclab::color::matrix::{inverse, mul};
+//! let m = [[2.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 8.0]];
+//! assert_eq!(mul(&inverse(&m), [2.0, 4.0, 8.0]), [1.0, 1.0, 1.0]);
+//! ```
+
+/// A 3×3 matrix, row-major, acting on column vectors.
+pub type Matrix = [[f64; 3]; 3];
+
+/// `m · v`.
+#[inline]
+#[must_use]
+pub fn mul(m: &Matrix, v: [f64; 3]) -> [f64; 3] {
+    m.map(|row| row[0] * v[0] + row[1] * v[1] + row[2] * v[2])
+}
+
+/// The inverse of `m` by cofactors (all zero if `m` is singular).
+#[must_use]
+pub fn inverse(m: &Matrix) -> Matrix {
+    let cof = |r: usize, c: usize| {
+        let (r1, r2, c1, c2) = ((r + 1) % 3, (r + 2) % 3, (c + 1) % 3, (c + 2) % 3);
+        m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]
+    };
+    let det = m[0][0] * cof(0, 0) + m[0][1] * cof(0, 1) + m[0][2] * cof(0, 2);
+    let scale = if det != 0.0 { 1.0 / det } else { 0.0 };
+    std::array::from_fn(|r| std::array::from_fn(|c| cof(c, r) * scale))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::color::XYZ_TO_SRGB;
+
+    #[test]
+    fn inverse_inverts() {
+        let m = XYZ_TO_SRGB;
+        let inv = inverse(&m);
+        for j in 0..3 {
+            let e: [f64; 3] = std::array::from_fn(|i| f64::from(u8::from(i == j)));
+            let back = mul(&m, mul(&inv, e));
+            assert!((0..3).all(|i| (back[i] - e[i]).abs() < 1e-12), "{back:?} vs {e:?}");
+        }
+    }
+
+    #[test]
+    fn singular_inverse_is_zero() {
+        let singular = [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 0.0, 1.0]];
+        assert_eq!(inverse(&singular), [[0.0; 3]; 3]);
+    }
+}

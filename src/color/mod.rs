@@ -1,0 +1,27 @@
+//! Colour: CIE XYZ, linear sRGB by the assignment's matrix, the sRGB
+//! transfer function, and chromatic adaptation.
+//!
+//! - [`Xyz`]: the integral of a spectrum against the CIE 1931 matching
+//!   functions, in the units of the spectrum times nanometres (no
+//!   normalisation: a light of arbitrary scale gives XYZ of that scale).
+//! - [`LinearSrgb`]: XYZ through the matrix of Appendix 1, part D,
+//!   **unclamped**: a negative component means the colour is outside the
+//!   sRGB gamut, which is information, not an error.
+//! - [`srgb`]: the IEC 61966-2-1 transfer function, for display.
+//! - [`adaptation`]: Bradford chromatic adaptation between whites.
+//!
+//! ```
+//! use speclab::Xyz;
+//! let rgb = Xyz::new(0.0, 1.0, 0.0).to_linear_srgb();
+//! assert_eq!((rgb.r, rgb.g, rgb.b), (-1.5374, 1.8760, -0.2040));
+//! assert!(!rgb.in_gamut());
+//! ```
+
+pub mod adaptation;
+pub mod matrix;
+pub mod srgb;
+mod xyz;
+
+pub use matrix::Matrix;
+pub use srgb::{LinearSrgb, XYZ_TO_SRGB};
+pub use xyz::Xyz;

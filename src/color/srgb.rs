@@ -1,0 +1,117 @@
+//! sRGB: linear sRGB by the assignment's matrix, and the IEC 61966-2-1
+//! transfer function that encodes it for display.
+//!
+//! [`LinearSrgb`] is XYZ through the matrix of Appendix 1, part D
+//! ([`XYZ_TO_SRGB`], four decimals as printed), **unclamped**. [`encode`]
+//! and [`decode`] are the standard's piecewise curve (a linear toe below
+//! 0.0031308, a 1/2.4 power above) and its inverse.
+//!
+//! ```
+//! use speclab::color::srgb::{decode, encode};
+//! assert_eq!(encode(0.0), 0.0);
+//! assert!((encode(0.18) - 0.4614).abs() < 1e-4); // 18 % grey encodes to 46 %
+//! assert!((decode(encode(0.5)) - 0.5).abs() < 1e-15);
+//! ```
+
+use crate::color::Matrix;
+
+/// XYZ → linear sRGB, from `data/xyz_to_srgb.txt` (Appendix 1, part D).
+pub const XYZ_TO_SRGB: Matrix = crate::spectrum::data::XYZ_TO_SRGB;
+
+/// Below this linear value the curve is a line of slope 12.92.
+pub const LINEAR_TOE: f64 = 0.003_130_8;
+
+/// The sRGB transfer function (IEC 61966-2-1): linear `c` in `[0, 1]` to
+/// its encoded value. Values outside `[0, 1]` are clamped first; NaN gives 0.
+#[must_use]
+pub fn encode(c: f64) -> f64 {
+    let c = if c > 0.0 { c.min(1.0) } else { 0.0 };
+    if c <= LINEAR_TOE { 12.92 * c } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 }
+}
+
+/// The inverse of [`encode`]: an encoded value in `[0, 1]` to linear.
+/// Values outside `[0, 1]` are clamped first; NaN gives 0.
+#[must_use]
+pub fn decode(v: f64) -> f64 {
+    let v = if v > 0.0 { v.min(1.0) } else { 0.0 };
+    if v <= 12.92 * LINEAR_TOE { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
+}
+
+/// An encoded value in `[0, 1]` quantised to 8 bits (round to nearest).
+#[must_use]
+pub fn to_8bit(v: f64) -> u8 {
+    (v.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+/// Linear (not gamma-encoded) sRGB, unclamped.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LinearSrgb {
+    /// Red.
+    pub r: f64,
+    /// Green.
+    pub g: f64,
+    /// Blue.
+    pub b: f64,
+}
+
+impl LinearSrgb {
+    /// From components.
+    #[inline]
+    #[must_use]
+    pub const fn new(r: f64, g: f64, b: f64) -> Self {
+        LinearSrgb { r, g, b }
+    }
+
+    /// `[r, g, b]`.
+    #[must_use]
+    pub const fn to_array(self) -> [f64; 3] {
+        [self.r, self.g, self.b]
+    }
+
+    /// True if no component is negative (the colour is inside sRGB's gamut,
+    /// up to the light's arbitrary brightness scale).
+    #[must_use]
+    pub fn in_gamut(self) -> bool {
+        self.r >= 0.0 && self.g >= 0.0 && self.b >= 0.0
+    }
+
+    /// Euclidean distance to `other`.
+    #[must_use]
+    pub fn distance(self, other: LinearSrgb) -> f64 {
+        let d = [self.r - other.r, self.g - other.g, self.b - other.b];
+        (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// IEC 61966-2-1: the two pieces meet at 0.0031308 (encoded 0.040450),
+    /// up to a step of 2.9e-8 that the standard's rounded constants leave;
+    /// 1 encodes to 1.
+    #[test]
+    fn transfer_function_at_its_breakpoints() {
+        assert_eq!(encode(LINEAR_TOE), 12.92 * LINEAR_TOE);
+        let step = encode(LINEAR_TOE * (1.0 + 1e-12)) - encode(LINEAR_TOE);
+        assert!(step < 0.0 && step > -3e-8, "{step:e}");
+        assert!((encode(1.0) - 1.0).abs() < 1e-15, "1.055 − 0.055 rounds to 1 − 2⁻⁵³");
+        assert_eq!(encode(2.0), encode(1.0));
+        assert_eq!(encode(-0.5), 0.0);
+        assert_eq!(encode(f64::NAN), 0.0);
+        assert!((encode(0.001) - 0.012_92).abs() < 1e-12);
+        assert!((decode(0.04045) - LINEAR_TOE).abs() < 1e-7);
+    }
+
+    #[test]
+    fn round_trips() {
+        for i in 0..=1000 {
+            let c = f64::from(i) / 1000.0;
+            assert!((decode(encode(c)) - c).abs() < 1e-12, "{c}");
+            assert!((encode(decode(c)) - c).abs() < 1e-12, "{c}");
+        }
+        assert_eq!(to_8bit(encode(1.0)), 255);
+        assert_eq!(to_8bit(encode(0.0)), 0);
+        assert_eq!(to_8bit(encode(0.18)), 118);
+    }
+}

@@ -1,0 +1,96 @@
+//! Reading spectra that users measured or downloaded.
+//!
+//! Three formats, told apart by content (not by file name):
+//! - the assignment's brace notation, `{380, 0.04}, {385, 0.05}, ...`
+//!   ([`brace`]);
+//! - JSON, `{"wavelengths": [...], "values": [...]}` ([`json`]);
+//! - two-column text: CSV, TSV or whitespace, with `#` comments and an
+//!   optional header ([`columns`]).
+//!
+//! [`text`] is the toolkit they share (positions, errors, a cursor) and
+//! [`read`] the one route from bytes to validated samples. **A new input
+//! format** is a file beside `brace.rs` that turns text into
+//! [`text::Samples`], plus a variant of [`read::Format`] (and a rule in
+//! `Format::detect`); validation, positions in errors and the range check
+//! come for free.
+//!
+//! Samples are validated for their [`Role`] (see
+//! [`crate::spectrum::validate`]), and a loaded spectrum **must cover the
+//! integration range** 380–730 nm: a lamp file that stops at 700 nm is an
+//! error, not a silently darker colour. (A spectrum built in code with
+//! [`TabulatedSpectrum::new`] is instead zero outside its samples.) Files
+//! and streams larger than [`read::MAX_BYTES`] are refused. Every error names
+//! the source, line and column.
+//!
+//! ```
+//! use speclab::io::Load;
+//! use speclab::Role;
+//! let text = "nm,power\n380,1\n730,2\n";
+//! let lamp = Load::new(Role::Light).text(text, "lamp.csv")?;
+//! assert_eq!(lamp.eval(555.0), 1.5);
+//! let short = Load::new(Role::Light).text("380,1\n700,2\n", "short.csv").unwrap_err();
+//! assert_eq!(short.to_string(), "short.csv:2:1: expected samples covering 380-730 nm, found 380-700 nm");
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+pub mod brace;
+pub mod columns;
+pub mod json;
+pub mod read;
+pub mod text;
+
+use std::path::Path;
+
+pub use read::Format;
+
+use crate::{Error, Interpolation, Role, TabulatedSpectrum};
+
+/// How to load: the role, the interpolation (by default the role's) and the
+/// format (by default detected).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Load {
+    /// What the spectrum is; sets validation and clamping.
+    pub role: Role,
+    /// How to interpolate.
+    pub interpolation: Interpolation,
+    /// The format, or `None` to detect it.
+    pub format: Option<Format>,
+}
+
+impl Load {
+    /// Loading as `role`, with its interpolation and a detected format.
+    #[must_use]
+    pub fn new(role: Role) -> Self {
+        Load { role, interpolation: role.interpolation(), format: None }
+    }
+
+    /// The same, with `interpolation` stated explicitly.
+    #[must_use]
+    pub fn with_interpolation(self, interpolation: Interpolation) -> Self {
+        Load { interpolation, ..self }
+    }
+
+    /// The same, with the format stated explicitly.
+    #[must_use]
+    pub fn with_format(self, format: Format) -> Self {
+        Load { format: Some(format), ..self }
+    }
+
+    /// A spectrum from `text`; `origin` names it in errors.
+    pub fn text(&self, text: &str, origin: &str) -> Result<TabulatedSpectrum, Error> {
+        let samples = read::samples(text, origin, self.role, self.interpolation, self.format)?;
+        Ok(TabulatedSpectrum::from_samples(samples, self.role, self.interpolation))
+    }
+
+    /// A spectrum from the file at `path` (at most [`read::MAX_BYTES`]).
+    pub fn file(&self, path: impl AsRef<Path>) -> Result<TabulatedSpectrum, Error> {
+        let path = path.as_ref();
+        self.text(&read::file(path)?, &path.display().to_string())
+    }
+
+    /// A spectrum from a stream (at most [`read::MAX_BYTES`]); `origin`
+    /// names it in errors.
+    pub fn reader(&self, reader: impl std::io::Read, origin: &str) -> Result<TabulatedSpectrum, Error> {
+        self.text(&read::text(reader, origin, read::MAX_BYTES)?, origin)
+    }
+}

@@ -1,0 +1,34 @@
+//! Where spectra are looked at, and how their product becomes XYZ.
+//!
+//! - [`HeroSample<K>`]: K random wavelengths with a pdf each (K = 1 is
+//!   plain random sampling, K = 4 the usual hero sampling);
+//!   [`SampledSpectrum<K>`]: a spectrum's values at them.
+//! - [`RegularSpectrum<M, B>`](RegularSpectrum): M fixed buckets over
+//!   380–730 nm, filled by centre samples ([`Centre`]) or exact bucket means
+//!   ([`BoxAverage`]).
+//! - [`reference`]: the exact integral, which the estimates are judged by.
+//!
+//! One estimator serves all: XYZ ≈ Σ c̄(λ)·value(λ) / pdf(λ), averaged. A
+//! strategy only chooses the wavelengths and their pdf. **A new wavelength
+//! distribution** is a function from a uniform number to wavelengths and
+//! pdfs, handed to [`HeroSample::with_pdf`]; the estimator, the tests of
+//! unbiasedness and the study take it from there.
+//!
+//! ```
+//! use speclab::{data, HeroSample, RegularSpectrum, sampling::reference};
+//! let h = HeroSample::<4>::new(0.5);
+//! let one = h.to_xyz(data::A.sample(&h) * data::H4.sample(&h));
+//! let buckets = (RegularSpectrum::<16>::centre(&data::A) * RegularSpectrum::centre(&data::H4)).to_xyz();
+//! let exact = reference::xyz(&data::A, &data::H4);
+//! assert!((buckets.y - exact.y).abs() < 0.01 * exact.y && one.y > 0.0);
+//! ```
+
+pub mod hero;
+pub(crate) mod quadrature;
+pub mod reference;
+pub mod regular;
+mod sampled;
+
+pub use hero::HeroSample;
+pub use regular::{BoxAverage, Centre, RegularSpectrum};
+pub use sampled::SampledSpectrum;

@@ -1,0 +1,377 @@
+//! Piecewise polynomials through tabulated samples.
+//!
+//! Segment `k` spans `[λₖ, λₖ₊₁]` and holds the coefficients `[c0, c1, c2, c3]`
+//! of `p(t) = c0 + c1·t + c2·t² + c3·t³` in the local variable `t = λ − λₖ`
+//! (nanometres). Linear interpolation uses the two end samples; the cubic uses
+//! the four nearest samples, two on each side, with the stencil shifted
+//! inwards at the ends of the table.
+//!
+//! Values are clamped to `bounds` (for example `[0, 1]` for a reflectance).
+//! The *breaks* of a table are its wavelengths plus every point where a
+//! segment's polynomial crosses a bound, so between two consecutive breaks the
+//! clamped function is a single polynomial and can be integrated exactly.
+//!
+//! This file depends on `std` only: `build.rs` includes it with `#[path]` to
+//! precompute the coefficients of the built-in data. It is internal: users
+//! reach it through [`crate::TabulatedSpectrum`].
+
+use crate::spectrum::validate::Interpolation;
+
+/// Coefficients of one segment, in `t = λ − λₖ`.
+pub(crate) type Coeffs = [f64; 4];
+
+/// The segment coefficients of `interpolation` through `(lambda, values)`.
+pub(crate) fn coeffs(interpolation: Interpolation, lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
+    match interpolation {
+        Interpolation::Linear => linear_coeffs(lambda, values),
+        Interpolation::Cubic => cubic_coeffs(lambda, values),
+    }
+}
+
+/// Coefficients of the linear interpolant; needs at least 2 samples.
+pub(crate) fn linear_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
+    (0..lambda.len().min(values.len()).saturating_sub(1))
+        .map(|k| {
+            let slope = (values[k + 1] - values[k]) / (lambda[k + 1] - lambda[k]);
+            [values[k], slope, 0.0, 0.0]
+        })
+        .collect()
+}
+
+/// Coefficients of the four-point piecewise cubic; needs at least 4 samples.
+pub(crate) fn cubic_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
+    let n = lambda.len().min(values.len());
+    if n < 4 {
+        return Vec::new();
+    }
+    (0..n - 1)
+        .map(|k| {
+            // Two samples on each side of the segment, shifted at the ends.
+            let s = k.saturating_sub(1).min(n - 4);
+            let u: [f64; 4] = std::array::from_fn(|j| lambda[s + j] - lambda[k]);
+            let y: [f64; 4] = std::array::from_fn(|j| values[s + j]);
+            newton_to_monomial(u, y)
+        })
+        .collect()
+}
+
+/// The cubic through `(u[j], y[j])`, in monomial form.
+fn newton_to_monomial(u: [f64; 4], y: [f64; 4]) -> Coeffs {
+    // Divided differences: d[j] = y[u0..uj].
+    let mut d = y;
+    for level in 1..4 {
+        for j in (level..4).rev() {
+            d[j] = (d[j] - d[j - 1]) / (u[j] - u[j - level]);
+        }
+    }
+    // Horner on the Newton form: p = d0 + (t−u0)(d1 + (t−u1)(d2 + (t−u2)d3)).
+    let mut p = [d[3], 0.0, 0.0, 0.0];
+    for j in (0..3).rev() {
+        // p ← p·(t − u[j]) + d[j]
+        let mut next = [0.0; 4];
+        for i in 0..4 {
+            if i + 1 < 4 {
+                next[i + 1] += p[i];
+            }
+            next[i] -= u[j] * p[i];
+        }
+        next[0] += d[j];
+        p = next;
+    }
+    p
+}
+
+/// The wavelengths plus every crossing of a finite bound, sorted.
+pub(crate) fn breaks(lambda: &[f64], coeffs: &[Coeffs], bounds: [f64; 2]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(lambda.len());
+    for (k, c) in coeffs.iter().enumerate().take(lambda.len().saturating_sub(1)) {
+        out.push(lambda[k]);
+        let h = lambda[k + 1] - lambda[k];
+        let mut crossings: Vec<f64> =
+            bounds.iter().filter(|b| b.is_finite()).flat_map(|&b| roots_in(*c, b, h)).collect();
+        crossings.sort_by(f64::total_cmp);
+        out.extend(crossings.into_iter().map(|t| lambda[k] + t));
+    }
+    out.extend(lambda.last());
+    out.dedup();
+    out
+}
+
+/// Points in `(0, h)` where `p(t) = level`, found by bisection on the
+/// monotone pieces between the critical points of `p`.
+fn roots_in(c: Coeffs, level: f64, h: f64) -> Vec<f64> {
+    let f = |t: f64| segment_value(c, t) - level;
+    let mut knots = vec![0.0];
+    // Critical points: roots of c1 + 2·c2·t + 3·c3·t².
+    let (a, b, cc) = (3.0 * c[3], 2.0 * c[2], c[1]);
+    if a != 0.0 {
+        let disc = b * b - 4.0 * a * cc;
+        if disc >= 0.0 {
+            let r = disc.sqrt();
+            knots.push((-b - r) / (2.0 * a));
+            knots.push((-b + r) / (2.0 * a));
+        }
+    } else if b != 0.0 {
+        knots.push(-cc / b);
+    }
+    knots.push(h);
+    knots.retain(|t| (0.0..=h).contains(t));
+    knots.sort_by(f64::total_cmp);
+    let mut roots = Vec::new();
+    for w in knots.windows(2) {
+        let (mut lo, mut hi) = (w[0], w[1]);
+        if f(lo) * f(hi) >= 0.0 {
+            continue;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if f(lo) * f(mid) <= 0.0 { hi = mid } else { lo = mid }
+        }
+        roots.push(0.5 * (lo + hi));
+    }
+    // A root at an end is a knot, already a break.
+    roots.retain(|&t| t > 1e-9 * h && t < h * (1.0 - 1e-9));
+    roots
+}
+
+/// `p(t)` by Horner's rule, unclamped.
+#[inline]
+pub(crate) const fn segment_value(c: Coeffs, t: f64) -> f64 {
+    c[0] + t * (c[1] + t * (c[2] + t * c[3]))
+}
+
+/// `x` limited to `[lo, hi]`; NaN stays NaN.
+#[inline]
+pub(crate) const fn clamp(x: f64, bounds: [f64; 2]) -> f64 {
+    if x < bounds[0] {
+        bounds[0]
+    } else if x > bounds[1] {
+        bounds[1]
+    } else {
+        x
+    }
+}
+
+/// Index `k` of the segment with `λₖ ≤ x`, for `x` inside the table.
+#[inline]
+pub(crate) const fn segment_of(lambda: &[f64], x: f64) -> usize {
+    let (mut lo, mut hi) = (0, lambda.len().saturating_sub(1));
+    while hi - lo > 1 {
+        let mid = (lo + hi) / 2;
+        if lambda[mid] <= x { lo = mid } else { hi = mid }
+    }
+    lo
+}
+
+/// The clamped interpolant at `x`; zero outside `[λ₀, λₙ₋₁]` and for NaN.
+pub(crate) const fn eval(lambda: &[f64], coeffs: &[Coeffs], bounds: [f64; 2], x: f64) -> f64 {
+    let n = lambda.len();
+    if n < 2 || coeffs.len() + 1 != n || !(x >= lambda[0] && x <= lambda[n - 1]) {
+        return 0.0;
+    }
+    let k = segment_of(lambda, x);
+    clamp(segment_value(coeffs[k], x - lambda[k]), bounds)
+}
+
+/// `∫ p(t) dt` from `t0` to `t1`.
+const fn segment_integral(c: Coeffs, t0: f64, t1: f64) -> f64 {
+    primitive(c, t1) - primitive(c, t0)
+}
+
+/// `∫₀ᵗ p`, by Horner's rule.
+const fn primitive(c: Coeffs, t: f64) -> f64 {
+    t * (c[0] + t * (c[1] / 2.0 + t * (c[2] / 3.0 + t * c[3] / 4.0)))
+}
+
+/// Exact integral of the clamped interpolant over `[a, b]` (zero outside
+/// the table). `brk` must be the table's [`breaks`].
+pub(crate) const fn integral(
+    lambda: &[f64],
+    coeffs: &[Coeffs],
+    brk: &[f64],
+    bounds: [f64; 2],
+    a: f64,
+    b: f64,
+) -> f64 {
+    if lambda.len() < 2 || coeffs.len() + 1 != lambda.len() || a >= b || a.is_nan() || b.is_nan() {
+        return 0.0;
+    }
+    let mut sum = 0.0;
+    let mut i = 0;
+    while i + 1 < brk.len() {
+        let x0 = if brk[i] > a { brk[i] } else { a };
+        let x1 = if brk[i + 1] < b { brk[i + 1] } else { b };
+        if x0 < x1 {
+            let mid = 0.5 * (x0 + x1);
+            let k = segment_of(lambda, mid);
+            let c = coeffs[k];
+            let raw = segment_value(c, mid - lambda[k]);
+            sum += if raw < bounds[0] {
+                bounds[0] * (x1 - x0)
+            } else if raw > bounds[1] {
+                bounds[1] * (x1 - x0)
+            } else {
+                segment_integral(c, x0 - lambda[k], x1 - lambda[k])
+            };
+        }
+        i += 1;
+    }
+    sum
+}
+
+/// `1 / step` if the wavelengths are equidistant (to 1e-9 of a step), else 0.
+pub(crate) const fn uniform_inv_step(lambda: &[f64]) -> f64 {
+    let n = lambda.len();
+    if n < 2 {
+        return 0.0;
+    }
+    let step = (lambda[n - 1] - lambda[0]) / (n - 1) as f64;
+    let mut k = 0;
+    while k < n {
+        let d = lambda[k] - (lambda[0] + k as f64 * step);
+        if d.abs() > 1e-9 * step {
+            return 0.0;
+        }
+        k += 1;
+    }
+    1.0 / step
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spectrum::data::{CIE_Z, CIE_Z_BREAKS, CIE_Z_COEFFS, CIE_Z_LAMBDA};
+
+    #[test]
+    fn cubic_reproduces_cubics_exactly() {
+        let f = |x: f64| 2.0 - 0.5 * x + 0.01 * x * x - 1e-4 * x * x * x;
+        let lambda = [0.0, 3.0, 7.0, 10.0, 12.0, 20.0];
+        let values = lambda.map(f);
+        let coeffs = cubic_coeffs(&lambda, &values);
+        let free = [f64::NEG_INFINITY, f64::INFINITY];
+        for i in 0..=200 {
+            let x = i as f64 * 0.1;
+            assert!((eval(&lambda, &coeffs, free, x) - f(x)).abs() < 1e-12, "at {x}");
+        }
+    }
+
+    #[test]
+    fn integral_is_exact_for_cubics() {
+        let lambda = [0.0, 1.0, 2.0, 3.0];
+        let coeffs = cubic_coeffs(&lambda, &[0.0, 1.0, 8.0, 27.0]); // x³
+        let free = [f64::NEG_INFINITY, f64::INFINITY];
+        let brk = breaks(&lambda, &coeffs, free);
+        assert!(
+            (integral(&lambda, &coeffs, &brk, free, 0.5, 2.5) - (2.5f64.powi(4) - 0.5f64.powi(4)) / 4.0)
+                .abs()
+                < 1e-12
+        );
+    }
+
+    /// Decision: matching functions are clamped at zero. The raw cubic of z̄
+    /// dips below zero between 630 and 635 nm (minimum −6.4e-6 at 632.1 nm);
+    /// the clamp keeps every sample's contribution physical and changes ∫z̄
+    /// (≈ 106.9 nm) by 2.1e-5 nm, 2e-7 of it.
+    #[test]
+    fn z_bar_dip_is_clamped_and_negligible() {
+        let free = [f64::NEG_INFINITY, f64::INFINITY];
+        let raw_min = (0..=4000)
+            .map(|i| 380.0 + i as f64 * 0.1)
+            .map(|x| eval(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, free, x))
+            .fold(f64::INFINITY, f64::min);
+        assert!(raw_min < 0.0, "the raw cubic dips: {raw_min}");
+        assert!((0..=4000).all(|i| CIE_Z.eval(380.0 + i as f64 * 0.1) >= 0.0));
+        let negative_part =
+            integral(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, &CIE_Z_BREAKS, [f64::NEG_INFINITY, 0.0], 380.0, 780.0);
+        assert!(negative_part < 0.0 && negative_part > -3e-5, "∫min(z̄, 0) = {negative_part}");
+        let total = CIE_Z.integral(380.0, 780.0);
+        assert!((total - 106.9).abs() < 0.5, "∫z̄ = {total}");
+        eprintln!("raw z̄ minimum {raw_min:e}, ∫min(z̄, 0) = {negative_part:e} nm");
+    }
+
+    #[test]
+    fn roots_split_clamped_pieces() {
+        // Cubic through 0, 1, 1, 0 on 0..30 exceeds 1 on the middle segment.
+        let lambda = [0.0, 10.0, 20.0, 30.0];
+        let coeffs = cubic_coeffs(&lambda, &[0.0, 1.0, 1.0, 0.0]);
+        let brk = breaks(&lambda, &coeffs, [0.0, 1.0]);
+        assert_eq!(brk, vec![0.0, 10.0, 20.0, 30.0], "crossings at the knots only");
+        let coeffs = cubic_coeffs(&lambda, &[0.0, 0.9, 0.95, 0.0]);
+        assert_eq!(breaks(&lambda, &coeffs, [0.0, 1.0]).len(), 6, "two crossings of 1 inside");
+    }
+
+    /// A quadratic segment (c₃ = 0, c₂ ≠ 0): its one critical point splits
+    /// it, and bisection finds both crossings to full precision.
+    /// p(t) = t − 0.1·t² meets 2 at t = 5 ± √5.
+    #[test]
+    fn roots_of_a_quadratic_segment() {
+        let roots = roots_in([0.0, 1.0, -0.1, 0.0], 2.0, 10.0);
+        let want = [5.0 - 5f64.sqrt(), 5.0 + 5f64.sqrt()];
+        assert_eq!(roots.len(), 2, "{roots:?}");
+        for (r, w) in roots.iter().zip(want) {
+            assert!((r - w).abs() < 1e-12, "{r} vs {w}");
+        }
+        // A line has no critical point: one crossing, found by bisection.
+        let line = roots_in([0.0, 0.5, 0.0, 0.0], 1.0, 10.0);
+        assert_eq!(line.len(), 1);
+        assert!((line[0] - 2.0).abs() < 1e-12, "{line:?}");
+        // Touching the level only at an end is not a crossing inside.
+        assert!(roots_in([0.0, 0.1, 0.0, 0.0], 1.0, 10.0).is_empty());
+    }
+
+    /// Outside the table, at NaN and for inconsistent tables, the clamped
+    /// interpolant is 0 and integrals are 0, even where the end polynomials
+    /// would extrapolate to something else.
+    #[test]
+    fn guards_of_eval_and_integral() {
+        let lambda = [400.0, 410.0, 420.0, 430.0];
+        let coeffs = cubic_coeffs(&lambda, &[1.0, 2.0, 3.0, 4.0]);
+        let free = [f64::NEG_INFINITY, f64::INFINITY];
+        let brk = breaks(&lambda, &coeffs, free);
+        assert_eq!(eval(&lambda, &coeffs, free, 400.0), 1.0);
+        assert_eq!(eval(&lambda, &coeffs, free, 430.0), 4.0);
+        for x in [399.0, 431.0, f64::NAN, f64::NEG_INFINITY, f64::INFINITY] {
+            assert_eq!(eval(&lambda, &coeffs, free, x), 0.0, "at {x}");
+        }
+        assert_eq!(eval(&lambda[..3], &coeffs, free, 405.0), 0.0, "coefficients do not fit the table");
+        assert_eq!(eval(&lambda[..1], &coeffs[..0], free, 400.0), 0.0, "one sample is no table");
+        assert!((integral(&lambda, &coeffs, &brk, free, 400.0, 430.0) - 75.0).abs() < 1e-12);
+        assert_eq!(integral(&lambda, &coeffs, &brk, free, 420.0, 410.0), 0.0, "reversed");
+        assert_eq!(integral(&lambda, &coeffs, &brk, free, 410.0, 410.0), 0.0, "empty");
+        assert_eq!(integral(&lambda, &coeffs, &brk, free, f64::NAN, 410.0), 0.0);
+        assert_eq!(integral(&lambda, &coeffs, &brk, free, 400.0, f64::NAN), 0.0);
+        assert_eq!(integral(&lambda[..3], &coeffs, &brk, free, 400.0, 430.0), 0.0, "inconsistent");
+        // Beyond the table the integral counts nothing.
+        assert!((integral(&lambda, &coeffs, &brk, free, 300.0, 500.0) - 75.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn uniform_step_is_detected() {
+        assert_eq!(uniform_inv_step(&[400.0, 410.0, 420.0]), 0.1);
+        assert_eq!(uniform_inv_step(&[400.0, 410.0, 421.0]), 0.0);
+        assert_eq!(uniform_inv_step(&[400.0]), 0.0);
+    }
+
+    proptest::proptest! {
+        /// Raw helpers accept mismatched and non-finite slices without panicking.
+        #[test]
+        fn raw_helpers_take_anything(
+            lambda in proptest::collection::vec(proptest::num::f64::ANY, 0..12),
+            values in proptest::collection::vec(proptest::num::f64::ANY, 0..12),
+        ) {
+            let coeffs = cubic_coeffs(&lambda, &values);
+            let linear = linear_coeffs(&lambda, &values);
+            let brk = breaks(&lambda, &coeffs, [0.0, 1.0]);
+            let _ = breaks(&lambda, &linear, [f64::NEG_INFINITY, f64::INFINITY]);
+            for x in [f64::NAN, 400.0, -1.0] {
+                let _ = eval(&lambda, &coeffs, [0.0, 1.0], x);
+                let _ = integral(&lambda, &coeffs, &brk, [0.0, 1.0], x, 500.0);
+            }
+            let _ = segment_of(&lambda, 500.0);
+            let _ = uniform_inv_step(&lambda);
+        }
+    }
+}

@@ -1,0 +1,91 @@
+//! The assignment's main user story: one light and one surface, the exact
+//! reference beside every technique, with sRGB, ΔE00 of one estimate and,
+//! over many trials, RMS ΔE00.
+//!
+//! ```
+//! use speclab::study::compare::{self, Settings};
+//! use speclab::study::scene::Choice;
+//! use speclab::Role;
+//! let light = Choice::Name("F11".into()).resolve(Role::Light)?;
+//! let patch = Choice::Name("G4".into()).resolve(Role::Reflectance)?;
+//! let lines = compare::compare(&light, &patch, &Settings::default())?;
+//! assert_eq!(lines[0].label, "reference");
+//! assert_eq!(lines[0].de00, 0.0);
+//! assert_eq!(lines.len(), 5);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::num::NonZeroUsize;
+
+use crate::study::method::{HERO_K, Method};
+use crate::study::perceptual;
+use crate::study::remarks::Viewing;
+use crate::study::scene::Named;
+use crate::study::trials;
+use crate::{Error, LinearSrgb};
+
+/// What to compare, and how.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Settings {
+    /// Samples for random and hero.
+    pub n: NonZeroUsize,
+    /// Buckets for the regular methods.
+    pub m: NonZeroUsize,
+    /// Hero width.
+    pub k: usize,
+    /// Seed of the single estimates, and base seed of the trials.
+    pub seed: u64,
+    /// Trials for the RMS ΔE00.
+    pub trials: NonZeroUsize,
+    /// Normalisation (already applied to the light) and white balance.
+    pub viewing: Viewing,
+}
+
+impl Default for Settings {
+    /// n = 100, M = 16, K = 4, seed 1, 200 trials, as Appendix 2.
+    fn default() -> Self {
+        let nz = |n| NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
+        Settings { n: nz(100), m: nz(16), k: HERO_K, seed: 1, trials: nz(200), viewing: Viewing::default() }
+    }
+}
+
+/// One technique's result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Line {
+    /// The technique and its count, e.g. `hero n=100 K=4`.
+    pub label: String,
+    /// Wavelengths evaluated per estimate.
+    pub evals: usize,
+    /// One estimate, as linear sRGB (white-balanced if asked).
+    pub rgb: LinearSrgb,
+    /// ΔE00 of that estimate to the reference.
+    pub de00: f64,
+    /// RMS ΔE00 over the trials (one trial for deterministic techniques).
+    pub rms_de00: f64,
+}
+
+/// The reference, random, hero, centre and box lines for `light × surface`.
+pub fn compare(light: &Named, surface: &Named, s: &Settings) -> Result<Vec<Line>, Error> {
+    let (l, r) = (&light.spectrum, &surface.spectrum);
+    let techniques = [
+        (Method::Reference, s.n, "reference".to_string()),
+        (Method::Random, s.n, format!("random n={}", s.n)),
+        (Method::Hero { k: s.k }, s.n, format!("hero n={} K={}", s.n, s.k)),
+        (Method::RegularCentre, s.m, format!("centre M={}", s.m)),
+        (Method::RegularBox, s.m, format!("box M={}", s.m)),
+    ];
+    let estimate = |method: Method, count, seed| method.xyz(l, r, count, seed).map(|x| s.viewing.adapt(x, l));
+    let white = s.viewing.white(l);
+    let exact = estimate(Method::Reference, s.n, 0)?;
+    techniques
+        .into_iter()
+        .map(|(method, count, label)| {
+            let xyz = estimate(method, count, s.seed)?;
+            let t = if method.is_random() { s.trials } else { NonZeroUsize::MIN };
+            let stats = trials::run(exact, white, t, s.seed, |seed| estimate(method, count, seed))?;
+            let de00 = perceptual::delta_e00(xyz, exact, white);
+            let evals = method.evaluations(count);
+            Ok(Line { label, evals, rgb: xyz.to_linear_srgb(), de00, rms_de00: stats.rms_de00 })
+        })
+        .collect()
+}

@@ -1,0 +1,83 @@
+//! The comparison grid: every light × surface by every method.
+//!
+//! This is the computation behind `examples/grid.rs`, kept in the library so
+//! that tests and other programs get the same numbers. Cell `c` (in row-major
+//! order over lights, then surfaces) draws its random methods from
+//! `derive_seed(seed, 2c)` (random) and `derive_seed(seed, 2c + 1)` (hero).
+//!
+//! ```
+//! use speclab::study::grid::Grid;
+//! use speclab::study::scene::{builtin_lights, builtin_surfaces};
+//! let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
+//! let rows = Grid::default().rows(&lights, &surfaces)?;
+//! assert_eq!(rows.len(), 18 * 5);
+//! assert_eq!(rows[5].light.name, "A");
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::num::NonZeroUsize;
+
+use crate::study::method::{Method, derive_seed};
+use crate::study::scene::Named;
+use crate::{Error, Xyz};
+
+/// Settings of a grid run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Grid {
+    /// Samples n for random and hero.
+    pub n: NonZeroUsize,
+    /// Buckets M for the regular methods.
+    pub m: NonZeroUsize,
+    /// Base seed.
+    pub seed: u64,
+}
+
+impl Default for Grid {
+    /// n = 100, M = 16, seed 1.
+    fn default() -> Self {
+        Grid {
+            n: NonZeroUsize::new(100).unwrap_or(NonZeroUsize::MIN),
+            m: NonZeroUsize::new(16).unwrap_or(NonZeroUsize::MIN),
+            seed: 1,
+        }
+    }
+}
+
+/// One cell of the grid under one method.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row<'a> {
+    /// The light.
+    pub light: &'a Named,
+    /// The surface.
+    pub surface: &'a Named,
+    /// The method.
+    pub method: Method,
+    /// n, M, or 0 for the reference.
+    pub samples: usize,
+    /// The result.
+    pub xyz: Xyz,
+}
+
+impl Grid {
+    /// All rows: for each light, each surface, each method in [`Method::ALL`].
+    pub fn rows<'a>(&self, lights: &'a [Named], surfaces: &'a [Named]) -> Result<Vec<Row<'a>>, Error> {
+        let mut rows = Vec::with_capacity(lights.len() * surfaces.len() * Method::ALL.len());
+        let mut cell = 0u64;
+        for light in lights {
+            for surface in surfaces {
+                for method in Method::ALL {
+                    let (samples, seed) = match method {
+                        Method::Random => (self.n, derive_seed(self.seed, 2 * cell)),
+                        Method::Hero { .. } => (self.n, derive_seed(self.seed, 2 * cell + 1)),
+                        _ => (self.m, 0),
+                    };
+                    let xyz = method.xyz(&light.spectrum, &surface.spectrum, samples, seed)?;
+                    let samples = method.reported_samples(samples);
+                    rows.push(Row { light, surface, method, samples, xyz });
+                }
+                cell += 1;
+            }
+        }
+        Ok(rows)
+    }
+}

@@ -1,0 +1,133 @@
+//! The five ways of computing a colour, behind one call.
+//!
+//! | method | wavelengths | `samples` means |
+//! |---|---|---|
+//! | `reference` | exact integration | (ignored; reported as 0) |
+//! | `random` | n × 1 uniform wavelength | n |
+//! | `hero` | n × K (hero + K − 1 rotations; K = 4 by default) | n |
+//! | `regular-centre` | M bucket centres | M |
+//! | `regular-box` | M bucket means | M |
+//!
+//! Random methods draw from `StdRng::seed_from_u64(seed)`, so a seed fixes
+//! the result. Use [`derive_seed`] to give independent runs their own seeds.
+//!
+//! ```
+//! use std::num::NonZeroUsize;
+//! use speclab::{data, study::method::Method};
+//! let n = NonZeroUsize::new(100).unwrap();
+//! let a = Method::HERO.xyz(&data::A, &data::E2, n, 7)?;
+//! assert_eq!(a, Method::HERO.xyz(&data::A, &data::E2, n, 7)?);
+//! assert_eq!(Method::from_name("regular-box"), Some(Method::RegularBox));
+//! assert_eq!(Method::HERO.evaluations(n), 400);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::num::NonZeroUsize;
+
+use rand::SeedableRng;
+use rand::rngs::StdRng;
+
+use crate::sampling::regular::{self, Rule};
+use crate::sampling::{hero, reference};
+use crate::{Error, TabulatedSpectrum, Xyz};
+
+/// The usual hero width: four wavelengths per sample.
+pub const HERO_K: usize = 4;
+
+/// How wavelengths are chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// Exact integration of the interpolants.
+    Reference,
+    /// n uniform wavelengths (`HeroSample<1>`).
+    Random,
+    /// n hero samples of `k` wavelengths (`HeroSample<k>`, k in
+    /// [`hero::WIDTHS`]).
+    Hero {
+        /// Wavelengths per sample.
+        k: usize,
+    },
+    /// `RegularSpectrum<M, Centre>`.
+    RegularCentre,
+    /// `RegularSpectrum<M, BoxAverage>`.
+    RegularBox,
+}
+
+impl Method {
+    /// Hero sampling of the usual width, [`HERO_K`].
+    pub const HERO: Method = Method::Hero { k: HERO_K };
+
+    /// The assignment's five methods, reference first.
+    pub const ALL: [Method; 5] =
+        [Method::Reference, Method::Random, Method::HERO, Method::RegularCentre, Method::RegularBox];
+
+    /// The name used in tables and CSV (`hero` for any K).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Reference => "reference",
+            Method::Random => "random",
+            Method::Hero { .. } => "hero",
+            Method::RegularCentre => "regular-centre",
+            Method::RegularBox => "regular-box",
+        }
+    }
+
+    /// The method with this name (`hero` is [`Method::HERO`]).
+    #[must_use]
+    pub fn from_name(name: &str) -> Option<Method> {
+        Method::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// True for the methods whose result depends on the seed.
+    #[must_use]
+    pub fn is_random(self) -> bool {
+        matches!(self, Method::Random | Method::Hero { .. })
+    }
+
+    /// The sample count reported for a run with `samples`: 0 for the reference.
+    #[must_use]
+    pub fn reported_samples(self, samples: NonZeroUsize) -> usize {
+        if self == Method::Reference { 0 } else { samples.get() }
+    }
+
+    /// Wavelengths evaluated per estimate with `samples` samples or buckets
+    /// (0 for the reference).
+    #[must_use]
+    pub fn evaluations(self, samples: NonZeroUsize) -> usize {
+        match self {
+            Method::Hero { k } => k.saturating_mul(samples.get()),
+            _ => self.reported_samples(samples),
+        }
+    }
+
+    /// XYZ of `light × surface` by this method with `samples` samples or
+    /// buckets. Errors for a hero width or bucket count that is not compiled
+    /// ([`hero::WIDTHS`], 1 to [`regular::MAX_BUCKETS`]).
+    pub fn xyz(
+        self,
+        light: &TabulatedSpectrum,
+        surface: &TabulatedSpectrum,
+        samples: NonZeroUsize,
+        seed: u64,
+    ) -> Result<Xyz, Error> {
+        let mut rng = StdRng::seed_from_u64(seed);
+        match self {
+            Method::Reference => Ok(reference::xyz(light, surface)),
+            Method::Random => Ok(hero::estimate::<1, _>(light, surface, samples, &mut rng)),
+            Method::Hero { k } => hero::estimate_dyn(k, light, surface, samples, &mut rng),
+            Method::RegularCentre => regular::xyz_dyn(samples.get(), Rule::Centre, light, surface),
+            Method::RegularBox => regular::xyz_dyn(samples.get(), Rule::BoxAverage, light, surface),
+        }
+    }
+}
+
+/// A seed for stream `stream` of a run seeded with `base` (SplitMix64 of
+/// both), so that cells and trials draw independent sequences.
+#[must_use]
+pub fn derive_seed(base: u64, stream: u64) -> u64 {
+    let mut z = base ^ stream.wrapping_mul(0x9E37_79B9_7F4A_7C15).wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}

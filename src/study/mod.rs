@@ -1,0 +1,37 @@
+//! The accuracy study (feature `study`, on by default): how far each way of
+//! sampling wavelengths lands from the exact reference, perceptually.
+//!
+//! - [`scene`]: lights and surfaces, built-in or from files, named.
+//! - [`method`]: the five methods (reference, random, hero, centre and box
+//!   buckets) behind one call.
+//! - [`grid`]: every light × surface by every method (Appendix 2's layout).
+//! - [`trials`]: T independent estimates of a method: bias, spread, RMS and
+//!   95th-percentile ΔE00, gamut agreement (on all cores).
+//! - [`variance`]: exact variances of one random or hero sample.
+//! - [`perceptual`]: CIELAB relative to the light's white; CIEDE2000.
+//! - [`remarks`]: the assignment's three remarks (normalisation, white
+//!   balance).
+//! - [`convergence`], [`threshold`], [`compare`]: accuracy against sample
+//!   count, where it crosses a budget, one pair in detail.
+//! - [`report`]: tables and CSV.
+//!
+//! ```
+//! use std::num::NonZeroUsize;
+//! use speclab::{data, study::{method::Method, trials}};
+//! let (n, t) = (NonZeroUsize::new(16).unwrap(), NonZeroUsize::new(100).unwrap());
+//! let stats = trials::method(&data::A, &data::F4, Method::HERO, n, t, 1)?;
+//! assert!(stats.rms_de00 > 0.0 && stats.trials == 100);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+pub mod compare;
+pub mod convergence;
+pub mod grid;
+pub mod method;
+pub mod perceptual;
+pub mod remarks;
+pub mod report;
+pub mod scene;
+pub mod threshold;
+pub mod trials;
+pub mod variance;

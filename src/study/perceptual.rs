@@ -1,0 +1,59 @@
+//! Perceptual error: CIELAB relative to the light's own white, and CIEDE2000.
+//!
+//! The white is the exact XYZ of the perfect white (reflectance 1) under the
+//! same light, so L\*a\*b\* does not depend on the light's arbitrary scale
+//! (F11's "huge numbers" in Appendix 2 give the same Lab as a normalised
+//! F11). ΔE00 is palette's `Ciede2000` (Sharma, Wu and Dalal 2005), checked
+//! against their published test pairs in `tests/ciede2000.rs`. ΔE00 ≈ 1 is
+//! a just-noticeable difference between two colours side by side.
+//!
+//! ```
+//! use speclab::{data, sampling::reference, study::perceptual};
+//! let white = reference::white(&data::D65);
+//! let lab = perceptual::lab(reference::xyz(&data::D65, &data::A1), white);
+//! assert!(lab[0] > 95.0 && lab[1].abs() < 2.0); // A1 is a near-white patch
+//! assert_eq!(perceptual::delta_e00(white, white, white), 0.0);
+//! ```
+
+use palette::color_difference::Ciede2000;
+use palette::white_point::D65;
+
+use crate::Xyz;
+
+/// The largest ratio of a tristimulus value to the white's, `X/Xn`, that
+/// [`lab`] uses. A colour a million times brighter than the white (L* ≈
+/// 11,600) is off any perceptual scale already; the cap keeps CIEDE2000,
+/// which raises chroma to the 7th power, finite where a white component is
+/// nearly zero (a light with almost no power where z̄ lives) and an estimate
+/// puts energy there.
+pub const MAX_RATIO: f64 = 1e6;
+
+/// CIELAB `[L*, a*, b*]` of `xyz` relative to the white `white`. A white
+/// component that is not positive (a light with no power where that matching
+/// function lives) makes its ratio 0: under a dark light everything is
+/// black. Ratios are limited to ±[`MAX_RATIO`].
+#[must_use]
+pub fn lab(xyz: Xyz, white: Xyz) -> [f64; 3] {
+    let f = |t: f64| {
+        const DELTA: f64 = 6.0 / 29.0;
+        if t > DELTA * DELTA * DELTA { t.cbrt() } else { t / (3.0 * DELTA * DELTA) + 4.0 / 29.0 }
+    };
+    let ratio = |c: f64, w: f64| if w > 0.0 { (c / w).clamp(-MAX_RATIO, MAX_RATIO) } else { 0.0 };
+    let (fx, fy, fz) = (f(ratio(xyz.x, white.x)), f(ratio(xyz.y, white.y)), f(ratio(xyz.z, white.z)));
+    [116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)]
+}
+
+/// CIEDE2000 between two L\*a\*b\* colours.
+#[must_use]
+pub fn ciede2000(lab1: [f64; 3], lab2: [f64; 3]) -> f64 {
+    // The white point type parameter does not enter the formula.
+    let c1 = palette::Lab::<D65, f64>::new(lab1[0], lab1[1], lab1[2]);
+    let c2 = palette::Lab::<D65, f64>::new(lab2[0], lab2[1], lab2[2]);
+    c1.difference(c2)
+}
+
+/// ΔE00 between an estimate and the reference, both relative to `white`.
+#[must_use]
+pub fn delta_e00(estimate: Xyz, reference: Xyz, white: Xyz) -> f64 {
+    ciede2000(lab(estimate, white), lab(reference, white))
+}

@@ -1,0 +1,259 @@
+//! Output formats of the study: tables for people, CSV for programs.
+//!
+//! Each writer takes rows the study computed and an `impl Write`; the
+//! examples are argument parsing, one library call and one of these. **A
+//! new output format** is one more writer here, over the same rows.
+//!
+//! ```
+//! use speclab::study::{grid::Grid, remarks::Viewing, report, scene};
+//! let (lights, surfaces) = (scene::builtin_lights(), scene::builtin_surfaces());
+//! let rows = Grid::default().rows(&lights[..1], &surfaces[..1])?;
+//! let mut csv = Vec::new();
+//! report::grid_csv(&mut csv, &rows, &Viewing::default())?;
+//! let text = String::from_utf8(csv).unwrap();
+//! assert!(text.starts_with("light,surface,method,samples,x,y,z,r,g,b\nA,E2,reference,0,"));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use std::io::{self, Write};
+
+use crate::color::srgb;
+use crate::study::compare::{Line, Settings};
+use crate::study::convergence::{self, METHODS};
+use crate::study::grid::{Grid, Row};
+use crate::study::method::Method;
+use crate::study::perceptual;
+use crate::study::remarks::Viewing;
+use crate::{LinearSrgb, Xyz};
+
+/// Grid rows as CSV: `light,surface,method,samples,x,y,z,r,g,b`, full f64
+/// precision, colours white-balanced if `viewing` asks.
+pub fn grid_csv(out: &mut impl Write, rows: &[Row], viewing: &Viewing) -> io::Result<()> {
+    writeln!(out, "light,surface,method,samples,x,y,z,r,g,b")?;
+    for row in rows {
+        let xyz = viewing.adapt(row.xyz, &row.light.spectrum);
+        let [r, g, b] = xyz.to_linear_srgb().to_array();
+        let (light, surface, method) = (&row.light.name, &row.surface.name, row.method.name());
+        writeln!(
+            out,
+            "{light},{surface},{method},{},{},{},{},{r},{g},{b}",
+            row.samples, xyz.x, xyz.y, xyz.z
+        )?;
+    }
+    Ok(())
+}
+
+/// Grid rows as a table per light, each estimate beside the reference with
+/// its distance and ΔE00; with `colour`, a truecolour swatch per row.
+pub fn grid_table(
+    out: &mut impl Write,
+    grid: &Grid,
+    viewing: &Viewing,
+    rows: &[Row],
+    colour: bool,
+) -> io::Result<()> {
+    writeln!(out, "speclab grid: linear sRGB (unclamped) of light × patch, by method")?;
+    let (n, m, seed) = (grid.n, grid.m, grid.seed);
+    writeln!(
+        out,
+        "random: n = {n} wavelengths; hero: n = {n} samples × 4 wavelengths; regular: M = {m} buckets; seed {seed}"
+    )?;
+    let balance = if viewing.white_balance { "Bradford to D65" } else { "off" };
+    writeln!(out, "normalise: {}; white balance: {balance}", viewing.normalize.name())?;
+    writeln!(
+        out,
+        "Δ = distance to the reference in sRGB (and % of its length); ΔE00 in CIELAB of the light's white"
+    )?;
+    writeln!(out, "! = out of gamut (a negative component)")?;
+    let mut previous_light = "";
+    for cell in rows.chunk_by(|a, b| a.light.name == b.light.name && a.surface.name == b.surface.name) {
+        let light = &cell[0].light;
+        if light.name != previous_light {
+            previous_light = &light.name;
+            writeln!(out, "\nLight {previous_light}")?;
+            let h = ["patch", "method", "R", "G", "B", "Δ", "Δ%", "ΔE00"];
+            let (a, b, c, d, e, f, g, i) = (h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7]);
+            writeln!(out, "{a:<5} {b:<15} {c:>10} {d:>10} {e:>10}  {f:>9} {g:>7} {i:>7}")?;
+        }
+        let white = viewing.white(&light.spectrum);
+        let reference = cell.iter().find(|r| r.method == Method::Reference).map(|r| r.xyz);
+        let reference = reference.map(|x| viewing.adapt(x, &light.spectrum));
+        for row in cell {
+            let xyz = viewing.adapt(row.xyz, &light.spectrum);
+            grid_line(out, row, xyz, reference, white, colour)?;
+        }
+    }
+    Ok(())
+}
+
+/// One grid row: swatch, patch (on the reference row), method, sRGB, and
+/// the errors against `reference`.
+fn grid_line(
+    out: &mut impl Write,
+    row: &Row,
+    xyz: Xyz,
+    reference: Option<Xyz>,
+    white: Xyz,
+    colour: bool,
+) -> io::Result<()> {
+    let rgb = xyz.to_linear_srgb();
+    let patch = if row.method == Method::Reference { row.surface.name.as_str() } else { "" };
+    let swatch = if colour { swatch(rgb, white.y) } else { String::new() };
+    let flag = if rgb.in_gamut() { ' ' } else { '!' };
+    let name = row.method.name();
+    write!(out, "{swatch}{patch:<5} {name:<15} {:>10.3} {:>10.3} {:>10.3}{flag}", rgb.r, rgb.g, rgb.b)?;
+    match reference.filter(|_| row.method != Method::Reference) {
+        Some(exact) => {
+            let exact_rgb = exact.to_linear_srgb();
+            let d = rgb.distance(exact_rgb);
+            let share = 100.0 * d / exact_rgb.distance(LinearSrgb::default());
+            let de = perceptual::delta_e00(xyz, exact, white);
+            writeln!(out, " {d:>9.3} {share:>6.2}% {de:>7.2}")
+        }
+        None => writeln!(out),
+    }
+}
+
+/// Two truecolour cells showing `rgb` scaled so the light's white is 1,
+/// clipped and sRGB-encoded.
+fn swatch(rgb: LinearSrgb, white_y: f64) -> String {
+    let scale = if white_y > 0.0 { 1.0 / white_y } else { 0.0 };
+    let [r, g, b] = rgb.to_array().map(|c| srgb::to_8bit(srgb::encode(c * scale)));
+    format!("\x1b[48;2;{r};{g};{b}m  \x1b[0m ")
+}
+
+/// bias X, Y, Z; sd X, Y, Z; RMS and p95 ΔE00.
+fn numbers(r: &convergence::Row) -> [f64; 8] {
+    let (b, s) = (r.stats.bias, r.stats.sd);
+    [b.x, b.y, b.z, s.x, s.y, s.z, r.stats.rms_de00, r.stats.p95_de00]
+}
+
+/// Wavelength evaluations of a convergence row.
+fn evals(r: &convergence::Row) -> usize {
+    r.method.evaluations(std::num::NonZeroUsize::new(r.samples).unwrap_or(std::num::NonZeroUsize::MIN))
+}
+
+/// Convergence rows as CSV, one per method and count.
+pub fn converge_csv(out: &mut impl Write, rows: &[convergence::Row]) -> io::Result<()> {
+    writeln!(
+        out,
+        "light,surface,method,samples,trials,bias_x,bias_y,bias_z,sd_x,sd_y,sd_z,rms_de00,p95_de00"
+    )?;
+    for r in rows {
+        let numbers: Vec<String> = numbers(r).iter().map(f64::to_string).collect();
+        let head = format!("{},{},{},{},{}", r.light, r.surface, r.method.name(), r.samples, r.stats.trials);
+        writeln!(out, "{head},{}", numbers.join(","))?;
+    }
+    Ok(())
+}
+
+/// Convergence rows as a table per light × surface × method.
+pub fn converge_table(
+    out: &mut impl Write,
+    rows: &[convergence::Row],
+    trials: usize,
+    seed: u64,
+) -> io::Result<()> {
+    writeln!(out, "speclab converge: {trials} trials per random row, base seed {seed}")?;
+    writeln!(
+        out,
+        "evals = wavelength evaluations per estimate; bias and sd in XYZ; ΔE00 against the exact reference"
+    )?;
+    let heads = ["bias X", "bias Y", "bias Z", "sd X", "sd Y", "sd Z", "rms ΔE", "p95 ΔE"];
+    for run in rows.chunk_by(|a, b| (&a.light, &a.surface, a.method) == (&b.light, &b.surface, b.method)) {
+        let r = &run[0];
+        writeln!(out, "\n{} × {}: {}", r.light, r.surface, r.method.name())?;
+        let heads: String = heads.iter().map(|h| format!(" {h:>10}")).collect();
+        writeln!(out, "{:>7} {:>7}{heads}", "samples", "evals")?;
+        for r in run {
+            let cells: String = numbers(r).iter().map(|v| format!(" {v:>10.4}")).collect();
+            writeln!(out, "{:>7} {:>7}{cells}", r.samples, evals(r))?;
+        }
+    }
+    Ok(())
+}
+
+/// Per light, threshold and method: the first count with RMS ΔE00 below
+/// the threshold for every surface, and the count from which it stays
+/// below (a Markdown table).
+pub fn converge_summary(
+    out: &mut impl Write,
+    rows: &[convergence::Row],
+    trials: usize,
+    seed: u64,
+) -> io::Result<()> {
+    writeln!(
+        out,
+        "Smallest n (random, hero) and M (regular) with RMS ΔE00 below the threshold for every patch:"
+    )?;
+    writeln!(
+        out,
+        "first / stays below from (n over powers of two up to {}, M up to 64;",
+        convergence::MAX_N
+    )?;
+    writeln!(out, "{trials} trials per random row, base seed {seed}; evals = wavelength evaluations)\n")?;
+    writeln!(out, "| light | threshold | random n (evals) | hero n (evals) | centre M | box M |")?;
+    writeln!(out, "|---|---|---|---|---|---|")?;
+    let mut lights: Vec<&str> = rows.iter().map(|r| r.light.as_str()).collect();
+    lights.dedup();
+    for light in lights {
+        for threshold in [1.0, 0.5] {
+            let cells: Vec<String> = METHODS
+                .iter()
+                .map(|&method| {
+                    let c = convergence::crossing(rows, light, method, threshold);
+                    let show = |n: Option<usize>| match n {
+                        Some(n) if method.is_random() => {
+                            let evals = method.evaluations(
+                                std::num::NonZeroUsize::new(n).unwrap_or(std::num::NonZeroUsize::MIN),
+                            );
+                            format!("{n} ({evals})")
+                        }
+                        Some(n) => n.to_string(),
+                        None => "not reached".into(),
+                    };
+                    if c.first == c.stable {
+                        show(c.first)
+                    } else {
+                        format!("{} / {}", show(c.first), show(c.stable))
+                    }
+                })
+                .collect();
+            writeln!(out, "| {light} | {threshold} | {} |", cells.join(" | "))?;
+        }
+    }
+    Ok(())
+}
+
+/// The lines of [`crate::study::compare::compare`] as a table.
+pub fn compare_table(
+    out: &mut impl Write,
+    light: &str,
+    surface: &str,
+    s: &Settings,
+    lines: &[Line],
+) -> io::Result<()> {
+    let balance = if s.viewing.white_balance { "Bradford to D65" } else { "off" };
+    let normalize = s.viewing.normalize.name();
+    writeln!(
+        out,
+        "{light} × {surface}; normalise: {normalize}; white balance: {balance}; seed {}; RMS over {} trials",
+        s.seed, s.trials
+    )?;
+    let h = ["technique", "evals", "R", "G", "B", "gamut", "ΔE00", "RMS ΔE00"];
+    writeln!(
+        out,
+        "{:<18} {:>6} {:>11} {:>11} {:>11}  {:>6} {:>8} {:>8}",
+        h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7]
+    )?;
+    for l in lines {
+        let gamut = if l.rgb.in_gamut() { "in" } else { "OUT" };
+        let LinearSrgb { r, g, b } = l.rgb;
+        writeln!(
+            out,
+            "{:<18} {:>6} {r:>11.4} {g:>11.4} {b:>11.4}  {gamut:>6} {:>8.3} {:>8.3}",
+            l.label, l.evals, l.de00, l.rms_de00
+        )?;
+    }
+    Ok(())
+}

@@ -1,0 +1,114 @@
+//! Nothing the public API returns from finite, validated input is NaN or
+//! infinite. Lights and reflectances with values anywhere from 0 and
+//! subnormals up to the validation limit go through every computation;
+//! values past the limit are refused where they are written.
+
+use std::num::NonZeroUsize;
+
+use proptest::prelude::*;
+use rand::SeedableRng;
+use rand::rngs::StdRng;
+use speclab::sampling::{hero, reference};
+use speclab::spectrum::validate::MAX_VALUE;
+use speclab::{BoxAverage, Centre, Error, RegularSpectrum, Role, TabulatedSpectrum, Xyz};
+
+/// Light power across the scales that matter: zero, subnormal, tiny,
+/// ordinary, huge up to the limit.
+fn power() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        Just(0.0),
+        Just(f64::MIN_POSITIVE / 4.0),
+        Just(MAX_VALUE),
+        1e-300..1e-290f64,
+        0.0..100.0f64,
+        1e90..MAX_VALUE,
+    ]
+}
+
+/// `values` spread evenly over 380–730 nm.
+fn spectrum(values: Vec<f64>, role: Role) -> Result<TabulatedSpectrum, Error> {
+    let step = 350.0 / (values.len() - 1) as f64;
+    TabulatedSpectrum::new((0..values.len()).map(|i| 380.0 + i as f64 * step).collect(), values, role)
+}
+
+fn finite(x: Xyz) -> bool {
+    x.is_finite() && x.to_linear_srgb().to_array().iter().all(|c| c.is_finite())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn validated_input_gives_finite_results(
+        light in prop::collection::vec(power(), 2..40),
+        surface in prop::collection::vec(0.0..=1.0f64, 4..40),
+        seed in any::<u64>(),
+    ) {
+        let l = spectrum(light, Role::Light).expect("within the limits");
+        let s = spectrum(surface, Role::Reflectance).expect("within the limits");
+        prop_assert!(finite(reference::xyz(&l, &s)) && finite(reference::white(&l)));
+        let n = NonZeroUsize::new(3).expect("non-zero");
+        let mut rng = StdRng::seed_from_u64(seed);
+        prop_assert!(finite(hero::estimate::<1, _>(&l, &s, n, &mut rng)));
+        prop_assert!(finite(hero::estimate::<4, _>(&l, &s, n, &mut rng)));
+        let centre = RegularSpectrum::<16, Centre>::centre(&l) * RegularSpectrum::centre(&s);
+        let boxed = RegularSpectrum::<16, BoxAverage>::box_average(&l) * RegularSpectrum::box_average(&s);
+        prop_assert!(finite(centre.to_xyz()) && finite(boxed.to_xyz()));
+        prop_assert!(l.integral(380.0, 730.0).is_finite() && l.mean(380.0, 730.0).is_finite());
+        #[cfg(feature = "study")]
+        study(&l, &s, seed)?;
+    }
+
+    #[test]
+    fn values_past_the_limit_are_refused(value in MAX_VALUE * 1.000_001..f64::MAX) {
+        let err = spectrum(vec![1.0, value, 1.0], Role::Light).unwrap_err();
+        prop_assert!(err.to_string().starts_with("values[1]: expected a value of magnitude at most 1e100"), "{}", err);
+    }
+}
+
+/// The study's numbers on the same input: normalisation, Lab, ΔE00,
+/// trials, exact variances, white balance.
+#[cfg(feature = "study")]
+fn study(l: &TabulatedSpectrum, s: &TabulatedSpectrum, seed: u64) -> Result<(), TestCaseError> {
+    use speclab::study::method::Method;
+    use speclab::study::remarks::{Normalization, Viewing};
+    use speclab::study::{perceptual, trials, variance};
+    let (exact, white) = (reference::xyz(l, s), reference::white(l));
+    for mode in Normalization::ALL {
+        prop_assert!(!mode.factor(l).is_nan(), "{mode:?}");
+        if let Ok(scaled) = mode.apply(l) {
+            prop_assert!(finite(reference::white(&scaled)));
+        }
+    }
+    let lab = perceptual::lab(exact, white);
+    prop_assert!(lab.iter().all(|c| c.is_finite()), "{lab:?}");
+    let viewing = Viewing { white_balance: true, ..Viewing::default() };
+    prop_assert!(finite(viewing.adapt(exact, l)) && finite(viewing.white(l)));
+    let n = NonZeroUsize::new(2).expect("non-zero");
+    for method in Method::ALL {
+        let stats = trials::method(l, s, method, n, NonZeroUsize::new(5).expect("non-zero"), seed)
+            .map_err(|e| TestCaseError::fail(e.to_string()))?;
+        prop_assert!(stats.rms_de00.is_finite() && stats.p95_de00.is_finite(), "{method:?}: {stats:?}");
+        prop_assert!(stats.bias.is_finite() && stats.sd.is_finite(), "{method:?}: {stats:?}");
+    }
+    prop_assert!(variance::hero::<1>(l, s).is_finite() && variance::hero::<4>(l, s).is_finite());
+    Ok(())
+}
+
+/// The case the property above found: a light rising from subnormal power
+/// makes the white's Z 1.3e-310 while one box bucket puts 1e99 there; the
+/// ratio overflowed and CIEDE2000 returned NaN.
+#[cfg(feature = "study")]
+#[test]
+fn nearly_zero_white_component() {
+    use speclab::sampling::regular::{self, Rule};
+    use speclab::study::perceptual;
+    let l = spectrum(vec![0.0, 0.0, 0.0, 5.562_684_646_268_003e-309, 1e100], Role::Light).expect("valid");
+    let s = spectrum(vec![0.0, 0.0, 0.0, 0.516_878_024_304_750_5], Role::Reflectance).expect("valid");
+    let (exact, white) = (reference::xyz(&l, &s), reference::white(&l));
+    assert!(white.z > 0.0 && white.z < 1e-300, "{white:?}");
+    let boxed = regular::xyz_dyn(1, Rule::BoxAverage, &l, &s).expect("M = 1");
+    assert!(boxed.z / white.z == f64::INFINITY, "the ratio overflows");
+    let de = perceptual::delta_e00(boxed, exact, white);
+    assert!(de.is_finite() && de > 50.0, "finite and far off: {de}");
+}

@@ -1,0 +1,166 @@
+//! The per-sample API as a path tracer uses it: sampled-spectrum
+//! arithmetic, wavelengths and pdfs from the renderer's own sampler, pbrt's
+//! `TerminateSecondary`, and luminance alone.
+//!
+//! Statistical checks follow `tests/unbiased.rs`: `TRIALS` independent
+//! estimates of `N` samples each per cell, and the mean within `Z_MAX`
+//! standard errors of the exact reference on every channel of every cell
+//! (54 checks; a correct estimator fails one at 4.5σ with probability
+//! below 1e-3; the seeds are fixed).
+
+use rand::rngs::StdRng;
+use rand::{RngExt, SeedableRng};
+use speclab::data::{Light, Patch};
+use speclab::sampling::reference;
+use speclab::{Error, HeroSample, LAMBDA_MIN, SampledSpectrum, TabulatedSpectrum, WIDTH, Xyz, data};
+
+const TRIALS: usize = 2000;
+const N: usize = 8;
+const Z_MAX: f64 = 4.5;
+
+/// Every cell's mean of `TRIALS` estimates, each the mean of `N` draws of
+/// `sample`, lies within `Z_MAX` standard errors of the reference.
+fn unbiased(name: &str, sample: impl Fn(&TabulatedSpectrum, &TabulatedSpectrum, &mut StdRng) -> Xyz) {
+    let mut worst = 0.0f64;
+    for (c, (light, patch)) in Light::ALL.iter().flat_map(|l| Patch::ALL.map(|p| (*l, p))).enumerate() {
+        let (l, s) = (light.spectrum(), patch.spectrum());
+        let exact = reference::xyz(l, s).to_array();
+        let mut rng = StdRng::seed_from_u64(0x7E57 + c as u64);
+        let estimates: Vec<[f64; 3]> = (0..TRIALS)
+            .map(|_| ((0..N).map(|_| sample(l, s, &mut rng)).sum::<Xyz>() / N as f64).to_array())
+            .collect();
+        for ch in 0..3 {
+            let mean = estimates.iter().map(|e| e[ch]).sum::<f64>() / TRIALS as f64;
+            let var = estimates.iter().map(|e| (e[ch] - mean).powi(2)).sum::<f64>() / (TRIALS - 1) as f64;
+            let z = (mean - exact[ch]) / (var / TRIALS as f64).sqrt();
+            worst = worst.max(z.abs());
+            assert!(z.abs() < Z_MAX, "{name}: {light:?} {patch:?} channel {ch}: z = {z:.2}");
+        }
+    }
+    eprintln!("{name}: largest |z| over 54 checks: {worst:.2}");
+}
+
+/// Keeping only the hero (dispersion) stays unbiased: its pdf is divided
+/// by K, so its lone term carries the weight of all four.
+#[test]
+fn terminate_secondary_is_unbiased() {
+    unbiased("terminated hero", |l, s, rng| {
+        let mut h = HeroSample::<4>::new(rng.random());
+        h.terminate_secondary();
+        h.to_xyz(l.sample(&h) * s.sample(&h))
+    });
+}
+
+#[test]
+fn terminate_secondary_keeps_the_hero_alone() {
+    let mut h = HeroSample::<4>::new(0.1);
+    assert!(!h.secondary_terminated());
+    h.terminate_secondary();
+    assert!(h.secondary_terminated());
+    assert_eq!(h.pdf(), [1.0 / (4.0 * WIDTH), 0.0, 0.0, 0.0]);
+    assert_eq!(h.inv_pdf(), &[4.0 * WIDTH, 0.0, 0.0, 0.0]);
+    let once = h;
+    h.terminate_secondary();
+    assert_eq!(h, once, "terminating twice changes nothing");
+    let v = data::D65.sample(&h) * data::A1.sample(&h);
+    let alone = HeroSample::<1>::new(0.1);
+    let single = alone.to_xyz(data::D65.sample(&alone) * data::A1.sample(&alone));
+    let terminated = h.to_xyz(v);
+    assert!(
+        (terminated - single).to_array().iter().all(|d| d.abs() < 1e-12 * single.y),
+        "the hero alone is a K = 1 sample"
+    );
+    assert!(HeroSample::<1>::new(0.3).secondary_terminated(), "K = 1 has no secondaries");
+}
+
+/// A renderer's own wavelength distribution, p(λ) ∝ 1 + t over the range
+/// (t = (λ − 380)/W), drawn by inverting its CDF and rotated in primary
+/// sample space, is unbiased through `with_pdf`.
+#[test]
+fn own_distribution_through_with_pdf_is_unbiased() {
+    let lambda_of = |u: f64| LAMBDA_MIN + WIDTH * ((1.0 + 3.0 * u).sqrt() - 1.0);
+    let pdf_of = |lambda: f64| (1.0 + (lambda - LAMBDA_MIN) / WIDTH) / (1.5 * WIDTH);
+    unbiased("ramp pdf", |l, s, rng| {
+        let u: f64 = rng.random();
+        let lambda: [f64; 4] = std::array::from_fn(|j| lambda_of((u + j as f64 / 4.0).fract()));
+        let h = HeroSample::with_pdf(lambda, lambda.map(pdf_of)).expect("valid");
+        h.to_xyz(l.sample(&h) * s.sample(&h))
+    });
+}
+
+#[test]
+fn with_pdf_rejects_what_cannot_be_used() {
+    assert!(HeroSample::with_pdf([500.0, 600.0], [0.01, 0.0]).is_ok(), "pdf 0 marks a dropped wavelength");
+    for (lambda, pdf) in [(f64::NAN, 0.01), (500.0, -0.01), (500.0, f64::INFINITY), (f64::INFINITY, 0.01)] {
+        let err = HeroSample::with_pdf([400.0, lambda], [0.01, pdf]).unwrap_err();
+        assert!(matches!(err, Error::SampleWavelength { index: 1, .. }), "{err:?}");
+    }
+    let dropped = HeroSample::with_pdf([500.0, 600.0], [0.0, 0.0]).expect("valid");
+    assert_eq!(dropped.to_xyz(SampledSpectrum::splat(1.0)), Xyz::ZERO);
+}
+
+#[test]
+fn luminance_alone_equals_to_xyz_y() {
+    for i in 0..1000 {
+        let h = HeroSample::<4>::new(f64::from(i) / 1000.0);
+        let v = data::F11.sample(&h) * data::H4.sample(&h);
+        assert_eq!(h.y(v), h.to_xyz(v).y);
+    }
+}
+
+#[test]
+fn sampled_spectrum_arithmetic() {
+    type S = SampledSpectrum<4>;
+    let (a, b) = (S::new([1.0, 2.0, 3.0, 4.0]), S::new([2.0, 0.0, -1.0, 0.5]));
+    assert_eq!(a + b, S::new([3.0, 2.0, 2.0, 4.5]));
+    assert_eq!(a - b, S::new([-1.0, 2.0, 4.0, 3.5]));
+    assert_eq!(a * b, S::new([2.0, 0.0, -3.0, 2.0]));
+    assert_eq!(a / S::splat(2.0), S::new([0.5, 1.0, 1.5, 2.0]));
+    assert_eq!(a + 1.0, S::new([2.0, 3.0, 4.0, 5.0]));
+    assert_eq!(a - 1.0, S::new([0.0, 1.0, 2.0, 3.0]));
+    assert_eq!(a * 2.0, 2.0 * a);
+    assert_eq!(a / 2.0, S::new([0.5, 1.0, 1.5, 2.0]));
+    assert_eq!(-a, S::new([-1.0, -2.0, -3.0, -4.0]));
+    let mut c = a;
+    c += b;
+    c -= b;
+    c *= b;
+    c /= 2.0;
+    c += 1.0;
+    c -= 0.5;
+    c *= 2.0;
+    c /= S::splat(4.0);
+    assert_eq!(c, S::new([0.75, 0.25, -0.5, 0.75]));
+    assert_eq!(a.average(), 2.5);
+    assert_eq!(b.max_value(), 2.0);
+    assert_eq!((a[0], a[3]), (1.0, 4.0));
+    c[1] = 9.0;
+    assert_eq!(c[1], 9.0);
+    assert!(S::zero().is_black() && S::default().is_black() && !b.is_black());
+    assert_eq!(S::default(), S::splat(0.0));
+}
+
+/// `safe_div` gives 0 wherever the divisor is 0 (so 0/0 is 0); plain `/`
+/// follows IEEE.
+#[test]
+fn safe_division() {
+    let n = SampledSpectrum::new([0.0, 1.0, 6.0]);
+    let d = SampledSpectrum::new([0.0, 0.0, 3.0]);
+    assert_eq!(n.safe_div(d), SampledSpectrum::new([0.0, 0.0, 2.0]));
+    let plain = n / d;
+    assert!(plain[0].is_nan() && plain[1].is_infinite());
+}
+
+/// The pdf given is the pdf kept (up to the rounding of a reciprocal), and
+/// a pdf whose reciprocal overflows is refused like ∞.
+#[test]
+fn pdf_round_trip() {
+    let pdf = [0.004, 1e-3, 0.0, 0.0123];
+    let h = HeroSample::with_pdf([400.0, 500.0, 600.0, 700.0], pdf).expect("valid");
+    for (got, want) in h.pdf().iter().zip(pdf) {
+        assert!((got - want).abs() <= 1e-15 * want, "{got} vs {want}");
+    }
+    assert_eq!(h.inv_pdf()[2], 0.0);
+    assert!(HeroSample::with_pdf([400.0], [1e-310]).is_err());
+    assert_eq!(HeroSample::<2>::new(0.25).pdf(), [1.0 / WIDTH; 2]);
+}
