@@ -43,10 +43,22 @@ use crate::spectrum::interp;
 use crate::spectrum::validate::{Interpolation, Role};
 
 /// Rust source declaring spectra as statics, built up one file at a time.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Codegen {
     crate_path: String,
     source: String,
+    generated: Vec<Generated>,
+}
+
+/// The tables of one generated spectrum, kept for later use by a build
+/// script (speclab's computes its lights' reference weights from them).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Generated {
+    pub(crate) name: String,
+    pub(crate) lambda: Vec<f64>,
+    pub(crate) coeffs: Vec<interp::Coeffs>,
+    pub(crate) breaks: Vec<f64>,
+    pub(crate) bounds: [f64; 2],
 }
 
 impl Default for Codegen {
@@ -59,7 +71,7 @@ impl Codegen {
     /// Empty source that names speclab as `::speclab`.
     #[must_use]
     pub fn new() -> Self {
-        Codegen { crate_path: "::speclab".into(), source: String::new() }
+        Codegen { crate_path: "::speclab".into(), source: String::new(), generated: Vec::new() }
     }
 
     /// The same, naming speclab by `path` in the generated code (for
@@ -94,9 +106,17 @@ impl Codegen {
         &self.source
     }
 
+    /// The tables generated for `name`.
+    #[allow(dead_code)] // used by speclab's build.rs, which includes this file
+    pub(crate) fn generated(&self, name: &str) -> Option<&Generated> {
+        self.generated.iter().find(|g| g.name == name)
+    }
+
     fn spectrum(&mut self, name: &str, origin: &str, role: Role, interpolation: Interpolation, s: &Samples) {
         let coeffs = interp::coeffs(interpolation, &s.lambda, &s.values);
         let brk = interp::breaks(&s.lambda, &coeffs, role.bounds());
+        let prefix = interp::prefix(&s.lambda, &coeffs, &brk, role.bounds());
+        let clean = interp::clean(&s.lambda, &coeffs, &brk, role.bounds());
         let (n, b, p) = (s.lambda.len(), brk.len(), &self.crate_path);
         let out = &mut self.source;
         // Writing to a String cannot fail.
@@ -104,15 +124,19 @@ impl Codegen {
         let _ = writeln!(out, "pub const {name}_VALUES: [f64; {n}] = {:?};", s.values);
         let _ = writeln!(out, "pub const {name}_COEFFS: [[f64; 4]; {}] = {coeffs:?};", n - 1);
         let _ = writeln!(out, "pub const {name}_BREAKS: [f64; {b}] = {brk:?};");
+        let _ = writeln!(out, "pub const {name}_PREFIX: [f64; {n}] = {prefix:?};");
+        let _ = writeln!(out, "pub const {name}_CLEAN: [bool; {}] = {clean:?};", n - 1);
         let _ = writeln!(
             out,
             "/// {role:?} spectrum from {origin:?}.\n\
              pub static {name}: {p}::TabulatedSpectrum = {p}::TabulatedSpectrum::from_static(\n    \
              {p}::Role::{role:?},\n    {p}::Interpolation::{interpolation:?},\n    \
              {p}::spectrum::Tables {{ lambda: &{name}_LAMBDA, values: &{name}_VALUES, \
-             coeffs: &{name}_COEFFS, breaks: &{name}_BREAKS }},\n)\n\
+             coeffs: &{name}_COEFFS, breaks: &{name}_BREAKS, prefix: &{name}_PREFIX, clean: &{name}_CLEAN }},\n)\n\
              .expect(\"speclab codegen: inconsistent tables for {name}\");"
         );
+        let (lambda, bounds) = (s.lambda.clone(), role.bounds());
+        self.generated.push(Generated { name: name.into(), lambda, coeffs, breaks: brk, bounds });
     }
 }
 

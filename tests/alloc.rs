@@ -77,3 +77,24 @@ fn per_sample_path_does_not_allocate() {
     });
     assert_eq!(count, 0, "the per-sample path allocated {count} times");
 }
+
+/// Bucketing a spectrum, the fast exact reference and the batch allocate
+/// nothing either (the batch's scratch buffer is only for cubics that
+/// overshoot [0, 1], which these patches' do not).
+#[test]
+fn bucketing_reference_and_batch_do_not_allocate() {
+    let prepared =
+        speclab::sampling::PreparedLight::for_grid(&data::D65, data::G4.lambda(), data::G4.interpolation())
+            .expect("valid grid");
+    let samples: Vec<f64> =
+        speclab::data::Patch::ALL.iter().flat_map(|p| p.spectrum().values().to_vec()).collect();
+    let mut out = [speclab::Xyz::ZERO; 6];
+    let count = allocations(|| {
+        black_box(RegularSpectrum::<16, speclab::Centre>::centre(&data::F11));
+        black_box(RegularSpectrum::<16, BoxAverage>::box_average(&data::F11));
+        black_box(speclab::sampling::reference::xyz(&data::F11, &data::H4));
+        black_box(prepared.xyz(&data::G4));
+        prepared.batch(&samples, &mut out).expect("valid");
+    });
+    assert_eq!(count, 0, "allocated {count} times");
+}

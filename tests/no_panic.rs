@@ -130,6 +130,32 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Preparing a light for any grid, and converting any slice, returns a
+    /// value or an error.
+    #[test]
+    fn prepared_light_takes_anything(
+        grid in prop::collection::vec(any_f64(), 0..12),
+        samples in prop::collection::vec(any_f64(), 0..80),
+        outputs in 0..4usize,
+        cubic in any::<bool>(),
+    ) {
+        let interpolation = if cubic { Interpolation::Cubic } else { Interpolation::Linear };
+        for light in [&data::A, &data::F11] {
+            if let Ok(p) = speclab::sampling::PreparedLight::for_grid(light, &grid, interpolation) {
+                let mut out = vec![speclab::Xyz::ZERO; outputs];
+                if p.batch(&samples, &mut out).is_ok() {
+                    prop_assert!(out.iter().all(|x| x.is_finite()));
+                }
+                let _ = p.xyz_samples(&samples);
+                prop_assert!(p.xyz(&data::G4).is_finite());
+            }
+        }
+    }
+}
+
 #[test]
 fn hero_u_outside_unit_interval_is_documented() {
     assert_eq!(HeroSample::<4>::new(1.25), HeroSample::<4>::new(0.25));

@@ -135,13 +135,16 @@ impl<const K: usize> HeroSample<K> {
     }
 
     /// The sample's XYZ estimate of a spectrum with values `v`:
-    /// `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)`.
+    /// `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)`. Each wavelength's term is formed on its own
+    /// and the K terms are summed at the end, so the work has no chain
+    /// through the sample.
     #[inline(always)]
     #[must_use]
     pub fn to_xyz(&self, v: SampledSpectrum<K>) -> Xyz {
+        let cmf = observer::xyz_bar_lanes(&self.lambda);
         let mut sum = Xyz::ZERO;
-        for ((&lambda, &value), &w) in self.lambda.iter().zip(&v.values).zip(&self.inv_pdf) {
-            sum += observer::xyz_bar(lambda) * (value * w);
+        for ((c, v), w) in cmf.iter().zip(v.values).zip(self.inv_pdf) {
+            sum += *c * (v * w);
         }
         sum * (1.0 / K as f64)
     }
@@ -151,9 +154,10 @@ impl<const K: usize> HeroSample<K> {
     #[inline]
     #[must_use]
     pub fn y(&self, v: SampledSpectrum<K>) -> f64 {
+        let cmf = observer::xyz_bar_lanes(&self.lambda);
         let mut sum = 0.0;
-        for ((&lambda, &value), &w) in self.lambda.iter().zip(&v.values).zip(&self.inv_pdf) {
-            sum += observer::xyz_bar(lambda).y * (value * w);
+        for ((c, v), w) in cmf.iter().zip(v.values).zip(self.inv_pdf) {
+            sum += c.y * (v * w);
         }
         sum * (1.0 / K as f64)
     }
@@ -185,10 +189,10 @@ fn fract_slow(u: f64) -> f64 {
 
 impl TabulatedSpectrum {
     /// The spectrum's values at the wavelengths of `h`.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn sample<const K: usize>(&self, h: &HeroSample<K>) -> SampledSpectrum<K> {
-        SampledSpectrum::new(h.lambda.map(|lambda| self.eval(lambda)))
+        SampledSpectrum::new(self.eval_lanes(&h.lambda))
     }
 }
 

@@ -24,11 +24,14 @@
 //! ```
 
 pub mod hero;
+mod prepared;
 pub(crate) mod quadrature;
 pub mod reference;
 pub mod regular;
 mod sampled;
+pub(crate) mod weights;
 
 pub use hero::HeroSample;
+pub use prepared::PreparedLight;
 pub use regular::{BoxAverage, Centre, RegularSpectrum};
 pub use sampled::SampledSpectrum;

@@ -6,8 +6,9 @@
 //! is one polynomial of degree ≤ 3, so a product of a few factors is a
 //! polynomial too, and an n-point rule (exact to degree 2n − 1) integrates
 //! it exactly up to rounding.
-
-use crate::Xyz;
+//!
+//! This file depends on `std` only: `build.rs` includes it to compute the
+//! built-in lights' reference weights.
 
 /// A rule on `[-1, 1]`: (node, weight) pairs.
 pub(crate) type Rule<const N: usize> = [(f64, f64); N];
@@ -22,7 +23,7 @@ pub(crate) const GAUSS_5: Rule<5> = [
 ];
 
 /// 8 points, exact to degree 15: squares of such products (variances).
-#[cfg_attr(not(feature = "study"), allow(dead_code))]
+#[allow(dead_code)] // used by the study, not by build.rs
 pub(crate) const GAUSS_8: Rule<8> = [
     (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
     (0.183_434_642_495_649_8, 0.362_683_783_378_362),
@@ -35,17 +36,20 @@ pub(crate) const GAUSS_8: Rule<8> = [
 ];
 
 /// `∫ f` over `[pieces[0], pieces[last]]`, the rule applied to each piece
-/// between consecutive points.
-pub(crate) fn integrate<const N: usize>(
+/// between consecutive points; `f` has `D` components.
+pub(crate) fn integrate<const N: usize, const D: usize>(
     rule: &Rule<N>,
     pieces: &[f64],
-    mut f: impl FnMut(f64) -> Xyz,
-) -> Xyz {
-    let mut sum = Xyz::ZERO;
+    mut f: impl FnMut(f64) -> [f64; D],
+) -> [f64; D] {
+    let mut sum = [0.0; D];
     for w in pieces.windows(2) {
         let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
         for &(node, weight) in rule {
-            sum += f(mid + half * node) * (weight * half);
+            let v = f(mid + half * node);
+            for (s, v) in sum.iter_mut().zip(v) {
+                *s += v * (weight * half);
+            }
         }
     }
     sum
@@ -66,11 +70,11 @@ mod tests {
     /// Both rules integrate x^d exactly on [0, 2] for every degree they claim.
     fn exact_to<const N: usize>(rule: &Rule<N>) {
         for d in 0..2 * N as i32 {
-            let got = integrate(rule, &[0.0, 0.5, 2.0], |x| Xyz::new(x.powi(d), 0.0, 0.0)).x;
+            let [got] = integrate(rule, &[0.0, 0.5, 2.0], |x| [x.powi(d)]);
             let want = 2f64.powi(d + 1) / f64::from(d + 1);
             assert!((got - want).abs() < 1e-13 * want, "degree {d}: {got} vs {want}");
         }
-        let over = integrate(rule, &[0.0, 2.0], |x| Xyz::new(x.powi(2 * N as i32), 0.0, 0.0)).x;
+        let [over] = integrate(rule, &[0.0, 2.0], |x| [x.powi(2 * N as i32)]);
         let want = 2f64.powi(2 * N as i32 + 1) / (2 * N + 1) as f64;
         assert!((over - want).abs() > 1e-9 * want, "degree {} should not be exact", 2 * N);
     }

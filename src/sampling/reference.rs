@@ -18,14 +18,21 @@
 //! assert!((rgb.g - 82.44).abs() < 0.05); // Appendix 2: 80.79, 82.44, 80.84
 //! ```
 
+use crate::sampling::PreparedLight;
 use crate::sampling::quadrature::{self, GAUSS_5};
 use crate::spectrum::observer;
 use crate::{LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, Xyz};
 
-/// XYZ of `light × surface`.
+/// XYZ of `light × surface`. For a built-in light (or a clone of one)
+/// and a reflectance on the patches' 10 nm grid this is a dot product with
+/// weights computed at build time ([`crate::sampling::PreparedLight`]);
+/// otherwise exact integration piece by piece. Both are exact.
 #[must_use]
 pub fn xyz(light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Xyz {
-    xyz_of_product(&[light, surface])
+    match PreparedLight::builtin(light, surface) {
+        Some(prepared) => prepared.xyz(surface),
+        None => xyz_of_product(&[light, surface]),
+    }
 }
 
 /// XYZ of the perfect white (reflectance 1 over 380–730 nm) under `light`.
@@ -52,8 +59,9 @@ pub fn xyz_of_product(factors: &[&TabulatedSpectrum]) -> Xyz {
             .filter(|&x| x > a && x < b)
             .chain([a, b]),
     );
-    quadrature::integrate(&GAUSS_5, &pieces, |lambda| {
+    let [x, y, z] = quadrature::integrate(&GAUSS_5, &pieces, |lambda| {
         let f: f64 = factors.iter().map(|s| s.eval(lambda)).product();
-        observer::xyz_bar(lambda) * f
-    })
+        (observer::xyz_bar(lambda) * f).to_array()
+    });
+    Xyz::new(x, y, z)
 }

@@ -48,10 +48,11 @@ use crate::{Error, LAMBDA_MIN, Role, TabulatedSpectrum, WIDTH, Xyz};
 
 /// A rule that turns a spectrum into `M` bucket values.
 pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
-    /// The matching functions bucketed by this rule, computed at compile time.
-    const OBSERVER: [Xyz; M];
-    /// The value of `s` for bucket `i` of `M`.
-    fn bucket(s: &TabulatedSpectrum, i: usize) -> f64;
+    /// The matching functions bucketed by this rule, computed at compile
+    /// time: x̄ᵢ, ȳᵢ and z̄ᵢ as three rows (one dot product each).
+    const OBSERVER: [[f64; M]; 3];
+    /// The `M` bucket values of `s`.
+    fn buckets(s: &TabulatedSpectrum) -> [f64; M];
 }
 
 /// Point samples at bucket centres.
@@ -75,34 +76,54 @@ const fn centre(i: usize, m: usize) -> f64 {
 }
 
 impl<const M: usize> Bucketing<M> for Centre {
-    const OBSERVER: [Xyz; M] = centre_observer::<M>();
+    const OBSERVER: [[f64; M]; 3] = centre_observer::<M>();
+    /// The spectrum at the `M` centres, evaluated side by side.
     #[inline]
-    fn bucket(s: &TabulatedSpectrum, i: usize) -> f64 {
-        s.eval(centre(i, M))
+    fn buckets(s: &TabulatedSpectrum) -> [f64; M] {
+        s.eval_lanes(&const { centres::<M>() })
     }
 }
 
 impl<const M: usize> Bucketing<M> for BoxAverage {
-    const OBSERVER: [Xyz; M] = box_observer::<M>();
+    const OBSERVER: [[f64; M]; 3] = box_observer::<M>();
+    /// Differences of the exact cumulative integral at the `M + 1` edges:
+    /// O(1) per edge from the integrals stored with the spectrum.
     #[inline]
-    fn bucket(s: &TabulatedSpectrum, i: usize) -> f64 {
-        s.mean(edge(i, M), edge(i + 1, M))
+    fn buckets(s: &TabulatedSpectrum) -> [f64; M] {
+        let inv_width = M as f64 / WIDTH;
+        let mut out = [0.0; M];
+        let mut below = s.cumulative(edge(0, M));
+        for (i, v) in out.iter_mut().enumerate() {
+            let above = s.cumulative(edge(i + 1, M));
+            *v = (above - below) * inv_width;
+            below = above;
+        }
+        out
     }
 }
 
 const CMF_BOUNDS: [f64; 2] = Role::Observer.bounds();
 
+/// The `M` bucket centres, nm.
+const fn centres<const M: usize>() -> [f64; M] {
+    let mut out = [0.0; M];
+    let mut i = 0;
+    while i < M {
+        out[i] = centre(i, M);
+        i += 1;
+    }
+    out
+}
+
 /// `(x̄, ȳ, z̄)` at the centres of `M` buckets, evaluated at compile time.
-const fn centre_observer<const M: usize>() -> [Xyz; M] {
-    let mut out = [Xyz::ZERO; M];
+const fn centre_observer<const M: usize>() -> [[f64; M]; 3] {
+    let mut out = [[0.0; M]; 3];
     let mut i = 0;
     while i < M {
         let lambda = centre(i, M);
-        out[i] = Xyz::new(
-            interp::eval(&CIE_X_LAMBDA, &CIE_X_COEFFS, CMF_BOUNDS, lambda),
-            interp::eval(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, CMF_BOUNDS, lambda),
-            interp::eval(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, CMF_BOUNDS, lambda),
-        );
+        out[0][i] = interp::eval(&CIE_X_LAMBDA, &CIE_X_COEFFS, CMF_BOUNDS, lambda);
+        out[1][i] = interp::eval(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, CMF_BOUNDS, lambda);
+        out[2][i] = interp::eval(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, CMF_BOUNDS, lambda);
         i += 1;
     }
     out
@@ -110,16 +131,14 @@ const fn centre_observer<const M: usize>() -> [Xyz; M] {
 
 /// The exact means of `(x̄, ȳ, z̄)` over each of `M` buckets, evaluated at
 /// compile time.
-const fn box_observer<const M: usize>() -> [Xyz; M] {
-    let mut out = [Xyz::ZERO; M];
+const fn box_observer<const M: usize>() -> [[f64; M]; 3] {
+    let mut out = [[0.0; M]; 3];
     let mut i = 0;
     while i < M {
         let (a, b) = (edge(i, M), edge(i + 1, M));
-        out[i] = Xyz::new(
-            interp::integral(&CIE_X_LAMBDA, &CIE_X_COEFFS, &CIE_X_BREAKS, CMF_BOUNDS, a, b) / (b - a),
-            interp::integral(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, &CIE_Y_BREAKS, CMF_BOUNDS, a, b) / (b - a),
-            interp::integral(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, &CIE_Z_BREAKS, CMF_BOUNDS, a, b) / (b - a),
-        );
+        out[0][i] = interp::integral(&CIE_X_LAMBDA, &CIE_X_COEFFS, &CIE_X_BREAKS, CMF_BOUNDS, a, b) / (b - a);
+        out[1][i] = interp::integral(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, &CIE_Y_BREAKS, CMF_BOUNDS, a, b) / (b - a);
+        out[2][i] = interp::integral(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, &CIE_Z_BREAKS, CMF_BOUNDS, a, b) / (b - a);
         i += 1;
     }
     out
@@ -140,7 +159,7 @@ impl<const M: usize, B: Bucketing<M>> RegularSpectrum<M, B> {
     #[inline]
     #[must_use]
     pub fn from_spectrum(s: &TabulatedSpectrum) -> Self {
-        Self::from_values(std::array::from_fn(|i| B::bucket(s, i)))
+        Self::from_values(B::buckets(s))
     }
 
     /// From bucket values directly.
@@ -164,15 +183,13 @@ impl<const M: usize, B: Bucketing<M>> RegularSpectrum<M, B> {
         centre(i, M)
     }
 
-    /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`.
+    /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`: three dot products, each
+    /// with four independent partial sums.
     #[inline]
     #[must_use]
     pub fn to_xyz(&self) -> Xyz {
-        let mut sum = Xyz::ZERO;
-        for (v, cmf) in self.values.iter().zip(B::OBSERVER.iter()) {
-            sum += *cmf * *v;
-        }
-        sum * (WIDTH / M as f64)
+        let [x, y, z] = &B::OBSERVER;
+        Xyz::new(dot(&self.values, x), dot(&self.values, y), dot(&self.values, z)) * (WIDTH / M as f64)
     }
 }
 
@@ -196,9 +213,23 @@ impl<const M: usize, B: Bucketing<M>> Mul for RegularSpectrum<M, B> {
     type Output = Self;
     /// The point-wise product.
     #[inline]
-    fn mul(self, o: Self) -> Self {
-        Self::from_values(std::array::from_fn(|i| self.values[i] * o.values[i]))
+    fn mul(mut self, o: Self) -> Self {
+        for (a, b) in self.values.iter_mut().zip(o.values) {
+            *a *= b;
+        }
+        self
     }
+}
+
+/// `Σ aᵢ·bᵢ` in four interleaved partial sums, so that the additions do not
+/// wait on each other.
+#[inline(always)]
+fn dot<const M: usize>(a: &[f64; M], b: &[f64; M]) -> f64 {
+    let mut acc = [0.0; 4];
+    for i in 0..M {
+        acc[i % 4] += a[i] * b[i];
+    }
+    (acc[0] + acc[2]) + (acc[1] + acc[3])
 }
 
 /// A bucket rule chosen at run time.

@@ -18,9 +18,24 @@
 //! ```
 
 use crate::TabulatedSpectrum;
+use crate::sampling::weights::Weights;
 
 mod generated {
     include!(concat!(env!("OUT_DIR"), "/data.rs"));
+}
+
+/// The compiled-in reference weights of `light`, if it is a built-in light
+/// or a clone of one (its tables are the static ones), for reflectances on
+/// the patches' 10 nm grid. Computed by `build.rs`.
+pub(crate) fn builtin_weights(light: &TabulatedSpectrum) -> Option<&'static Weights> {
+    let same = |s: &TabulatedSpectrum| {
+        let (a, b) = (s.values(), light.values());
+        std::ptr::eq(a, b) && std::ptr::eq(s.lambda(), light.lambda()) && s.role() == light.role()
+    };
+    [(&A, &generated::A_WEIGHTS), (&D65, &generated::D65_WEIGHTS), (&F11, &generated::F11_WEIGHTS)]
+        .into_iter()
+        .find(|(s, _)| same(s))
+        .map(|(_, w)| w)
 }
 
 pub use generated::{A, A1, CIE_X, CIE_Y, CIE_Z, D65, E2, F4, F11, G4, H4, J4};

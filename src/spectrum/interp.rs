@@ -44,15 +44,22 @@ pub(crate) fn cubic_coeffs(lambda: &[f64], values: &[f64]) -> Vec<Coeffs> {
     if n < 4 {
         return Vec::new();
     }
-    (0..n - 1)
-        .map(|k| {
-            // Two samples on each side of the segment, shifted at the ends.
-            let s = k.saturating_sub(1).min(n - 4);
-            let u: [f64; 4] = std::array::from_fn(|j| lambda[s + j] - lambda[k]);
-            let y: [f64; 4] = std::array::from_fn(|j| values[s + j]);
-            newton_to_monomial(u, y)
-        })
-        .collect()
+    (0..n - 1).map(|k| cubic_segment(lambda, values, k)).collect()
+}
+
+/// The first of the four samples the cubic of segment `k` goes through:
+/// two on each side of the segment, shifted inwards at the ends.
+#[inline]
+pub(crate) fn stencil(k: usize, n: usize) -> usize {
+    k.saturating_sub(1).min(n.saturating_sub(4))
+}
+
+/// The cubic of segment `k` (needs `k + 1 < n` and `n ≥ 4`), in `t = λ − λₖ`.
+pub(crate) fn cubic_segment(lambda: &[f64], values: &[f64], k: usize) -> Coeffs {
+    let s = stencil(k, lambda.len().min(values.len()));
+    let u: [f64; 4] = std::array::from_fn(|j| lambda[s + j] - lambda[k]);
+    let y: [f64; 4] = std::array::from_fn(|j| values[s + j]);
+    newton_to_monomial(u, y)
 }
 
 /// The cubic through `(u[j], y[j])`, in monomial form.
@@ -86,38 +93,52 @@ pub(crate) fn breaks(lambda: &[f64], coeffs: &[Coeffs], bounds: [f64; 2]) -> Vec
     let mut out = Vec::with_capacity(lambda.len());
     for (k, c) in coeffs.iter().enumerate().take(lambda.len().saturating_sub(1)) {
         out.push(lambda[k]);
-        let h = lambda[k + 1] - lambda[k];
-        let mut crossings: Vec<f64> =
-            bounds.iter().filter(|b| b.is_finite()).flat_map(|&b| roots_in(*c, b, h)).collect();
-        crossings.sort_by(f64::total_cmp);
-        out.extend(crossings.into_iter().map(|t| lambda[k] + t));
+        let (crossings, count) = crossings(*c, bounds, lambda[k + 1] - lambda[k]);
+        out.extend(crossings[..count].iter().map(|t| lambda[k] + t));
     }
     out.extend(lambda.last());
     out.dedup();
     out
 }
 
+/// The points in `(0, h)` where segment `c` meets a finite bound, sorted
+/// (at most three per bound), without allocating.
+pub(crate) fn crossings(c: Coeffs, bounds: [f64; 2], h: f64) -> ([f64; 6], usize) {
+    let mut out = [0.0; 6];
+    let mut count = 0;
+    for level in bounds.into_iter().filter(|b| b.is_finite()) {
+        let (roots, n) = roots_in(c, level, h);
+        out[count..count + n].copy_from_slice(&roots[..n]);
+        count += n;
+    }
+    out[..count].sort_by(f64::total_cmp);
+    (out, count)
+}
+
 /// Points in `(0, h)` where `p(t) = level`, found by bisection on the
-/// monotone pieces between the critical points of `p`.
-fn roots_in(c: Coeffs, level: f64, h: f64) -> Vec<f64> {
+/// monotone pieces between the critical points of `p` (at most three).
+fn roots_in(c: Coeffs, level: f64, h: f64) -> ([f64; 3], usize) {
     let f = |t: f64| segment_value(c, t) - level;
-    let mut knots = vec![0.0];
-    // Critical points: roots of c1 + 2·c2·t + 3·c3·t².
+    // The ends and the critical points (roots of c1 + 2·c2·t + 3·c3·t²).
+    let mut knots = [0.0, h, h, h];
     let (a, b, cc) = (3.0 * c[3], 2.0 * c[2], c[1]);
     if a != 0.0 {
         let disc = b * b - 4.0 * a * cc;
         if disc >= 0.0 {
             let r = disc.sqrt();
-            knots.push((-b - r) / (2.0 * a));
-            knots.push((-b + r) / (2.0 * a));
+            knots[1] = (-b - r) / (2.0 * a);
+            knots[2] = (-b + r) / (2.0 * a);
         }
     } else if b != 0.0 {
-        knots.push(-cc / b);
+        knots[1] = -cc / b;
     }
-    knots.push(h);
-    knots.retain(|t| (0.0..=h).contains(t));
+    for t in &mut knots {
+        if !(0.0..=h).contains(t) {
+            *t = h;
+        }
+    }
     knots.sort_by(f64::total_cmp);
-    let mut roots = Vec::new();
+    let (mut roots, mut count) = ([0.0; 3], 0);
     for w in knots.windows(2) {
         let (mut lo, mut hi) = (w[0], w[1]);
         if f(lo) * f(hi) >= 0.0 {
@@ -130,11 +151,14 @@ fn roots_in(c: Coeffs, level: f64, h: f64) -> Vec<f64> {
             }
             if f(lo) * f(mid) <= 0.0 { hi = mid } else { lo = mid }
         }
-        roots.push(0.5 * (lo + hi));
+        let t = 0.5 * (lo + hi);
+        // A root at an end is a knot, already a break.
+        if t > 1e-9 * h && t < h * (1.0 - 1e-9) && count < 3 {
+            roots[count] = t;
+            count += 1;
+        }
     }
-    // A root at an end is a knot, already a break.
-    roots.retain(|&t| t > 1e-9 * h && t < h * (1.0 - 1e-9));
-    roots
+    (roots, count)
 }
 
 /// `p(t)` by Horner's rule, unclamped.
@@ -182,7 +206,8 @@ const fn segment_integral(c: Coeffs, t0: f64, t1: f64) -> f64 {
 }
 
 /// `∫₀ᵗ p`, by Horner's rule.
-const fn primitive(c: Coeffs, t: f64) -> f64 {
+#[inline(always)]
+pub(crate) const fn primitive(c: Coeffs, t: f64) -> f64 {
     t * (c[0] + t * (c[1] / 2.0 + t * (c[2] / 3.0 + t * c[3] / 4.0)))
 }
 
@@ -220,6 +245,62 @@ pub(crate) const fn integral(
         i += 1;
     }
     sum
+}
+
+/// The exact integral from the first knot to every knot (`prefix[0] = 0`),
+/// in one pass over the breaks. `brk` must be the table's [`breaks`].
+pub(crate) fn prefix(lambda: &[f64], coeffs: &[Coeffs], brk: &[f64], bounds: [f64; 2]) -> Vec<f64> {
+    let mut out = vec![0.0; lambda.len()];
+    let (mut sum, mut k) = (0.0, 0);
+    for w in brk.windows(2) {
+        let mid = 0.5 * (w[0] + w[1]);
+        while k + 2 < lambda.len() && lambda[k + 1] <= mid {
+            k += 1;
+        }
+        let Some(&c) = coeffs.get(k) else { break };
+        sum += piece_integral(c, lambda[k], w[0], w[1], bounds);
+        if w[1] == lambda[k + 1] {
+            out[k + 1] = sum;
+        }
+    }
+    out
+}
+
+/// The integral over one piece `[x0, x1]` of segment `c` starting at `knot`,
+/// where the clamped polynomial is either the polynomial or a bound.
+fn piece_integral(c: Coeffs, knot: f64, x0: f64, x1: f64, bounds: [f64; 2]) -> f64 {
+    let raw = segment_value(c, 0.5 * (x0 + x1) - knot);
+    if raw < bounds[0] {
+        bounds[0] * (x1 - x0)
+    } else if raw > bounds[1] {
+        bounds[1] * (x1 - x0)
+    } else {
+        segment_integral(c, x0 - knot, x1 - knot)
+    }
+}
+
+/// For every segment, whether its clamp never acts: no break inside it and
+/// its polynomial within the bounds. On such a segment the clamped function
+/// is the polynomial, and its integral is the polynomial's primitive.
+pub(crate) fn clean(lambda: &[f64], coeffs: &[Coeffs], brk: &[f64], bounds: [f64; 2]) -> Vec<bool> {
+    let mut out: Vec<bool> = coeffs
+        .iter()
+        .zip(lambda.windows(2))
+        .map(|(&c, w)| {
+            let mid = segment_value(c, 0.5 * (w[1] - w[0]));
+            mid >= bounds[0] && mid <= bounds[1]
+        })
+        .collect();
+    let mut k = 0;
+    for &b in brk {
+        while k + 1 < lambda.len() && lambda[k + 1] <= b {
+            k += 1;
+        }
+        if b > lambda[k] && k < out.len() {
+            out[k] = false;
+        }
+    }
+    out
 }
 
 /// `1 / step` if the wavelengths are equidistant (to 1e-9 of a step), else 0.
@@ -308,18 +389,24 @@ mod tests {
     /// p(t) = t − 0.1·t² meets 2 at t = 5 ± √5.
     #[test]
     fn roots_of_a_quadratic_segment() {
-        let roots = roots_in([0.0, 1.0, -0.1, 0.0], 2.0, 10.0);
+        let (roots, count) = roots_in([0.0, 1.0, -0.1, 0.0], 2.0, 10.0);
         let want = [5.0 - 5f64.sqrt(), 5.0 + 5f64.sqrt()];
-        assert_eq!(roots.len(), 2, "{roots:?}");
+        assert_eq!(count, 2, "{roots:?}");
         for (r, w) in roots.iter().zip(want) {
             assert!((r - w).abs() < 1e-12, "{r} vs {w}");
         }
         // A line has no critical point: one crossing, found by bisection.
-        let line = roots_in([0.0, 0.5, 0.0, 0.0], 1.0, 10.0);
-        assert_eq!(line.len(), 1);
+        let (line, count) = roots_in([0.0, 0.5, 0.0, 0.0], 1.0, 10.0);
+        assert_eq!(count, 1);
         assert!((line[0] - 2.0).abs() < 1e-12, "{line:?}");
         // Touching the level only at an end is not a crossing inside.
-        assert!(roots_in([0.0, 0.1, 0.0, 0.0], 1.0, 10.0).is_empty());
+        assert_eq!(roots_in([0.0, 0.1, 0.0, 0.0], 1.0, 10.0).1, 0);
+        // A cubic crossing a level three times: (t − 1)(t − 2)(t − 3) = 0 on (0, 4).
+        let (three, count) = roots_in([-6.0, 11.0, -6.0, 1.0], 0.0, 4.0);
+        assert_eq!(count, 3);
+        for (r, w) in three.iter().zip([1.0, 2.0, 3.0]) {
+            assert!((r - w).abs() < 1e-12, "{three:?}");
+        }
     }
 
     /// Outside the table, at NaN and for inconsistent tables, the clamped
@@ -353,6 +440,32 @@ mod tests {
         assert_eq!(uniform_inv_step(&[400.0, 410.0, 420.0]), 0.1);
         assert_eq!(uniform_inv_step(&[400.0, 410.0, 421.0]), 0.0);
         assert_eq!(uniform_inv_step(&[400.0]), 0.0);
+    }
+
+    /// The prefix integrals equal the direct integrals, and a segment is
+    /// clean exactly when no clamp acts on it.
+    #[test]
+    fn prefix_and_clean() {
+        let lambda = [0.0, 10.0, 20.0, 30.0, 40.0];
+        let coeffs = cubic_coeffs(&lambda, &[0.0, 0.9, 0.95, 0.0, 0.5]);
+        let bounds = [0.0, 1.0];
+        let brk = breaks(&lambda, &coeffs, bounds);
+        let p = prefix(&lambda, &coeffs, &brk, bounds);
+        for k in 0..lambda.len() {
+            let direct = integral(&lambda, &coeffs, &brk, bounds, 0.0, lambda[k]);
+            assert!((p[k] - direct).abs() < 1e-12, "{k}: {} vs {direct}", p[k]);
+        }
+        // Independently: a segment is clean when its raw polynomial stays in
+        // the bounds at 1001 points.
+        let by_sampling: Vec<bool> = (0..4)
+            .map(|k| (0..=1000).all(|i| (0.0..=1.0).contains(&segment_value(coeffs[k], f64::from(i) * 0.01))))
+            .collect();
+        assert_eq!(clean(&lambda, &coeffs, &brk, bounds), by_sampling);
+        assert!(by_sampling.contains(&true) && by_sampling.contains(&false), "{by_sampling:?}");
+        // A segment wholly above the bound has no crossing inside, and is not clean.
+        let high = [[2.0, 0.0, 0.0, 0.0]];
+        assert_eq!(clean(&[0.0, 1.0], &high, &[0.0, 1.0], bounds), [false]);
+        assert_eq!(prefix(&[0.0, 1.0], &high, &[0.0, 1.0], bounds), [0.0, 1.0]);
     }
 
     proptest::proptest! {

@@ -17,6 +17,7 @@
 //! ```
 
 pub mod data;
+mod grid;
 pub(crate) mod interp;
 pub mod observer;
 pub(crate) mod range;

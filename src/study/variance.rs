@@ -46,10 +46,11 @@ pub fn hero<const K: usize>(light: &TabulatedSpectrum, surface: &TabulatedSpectr
             .map(|b| LAMBDA_MIN + (b - LAMBDA_MIN) % period)
             .chain([LAMBDA_MIN, LAMBDA_MIN + period]),
     );
-    let second = quadrature::integrate(&GAUSS_8, &pieces, |x| {
+    let [x2, y2, z2] = quadrature::integrate(&GAUSS_8, &pieces, |x| {
         let v = g(x);
-        Xyz::new(v.x * v.x, v.y * v.y, v.z * v.z)
+        [v.x * v.x, v.y * v.y, v.z * v.z]
     });
+    let second = Xyz::new(x2, y2, z2);
     let mean = reference::xyz(light, surface);
     let m2 = second * period;
     Xyz::new(m2.x - mean.x * mean.x, m2.y - mean.y * mean.y, m2.z - mean.z * mean.z)

@@ -1,0 +1,278 @@
+//! A light prepared for the exact XYZ of many reflectances: the reference
+//! as a dot product with the reflectance's samples (see [`Weights`]).
+//!
+//! Preparing computes one weight per sample and channel for the
+//! reflectances' grid; the built-in lights carry theirs for the patches'
+//! 10 nm grid, computed at build time. Each XYZ is then exact and O(n): a
+//! dot product, plus exact integration of the few segments where a
+//! reflectance's clamp to [0, 1] acts. [`PreparedLight::batch`] converts a
+//! slice of raw sample arrays into a slice of XYZ, without allocating per
+//! spectrum; split the slices to use more threads.
+//!
+//! ```
+//! use speclab::{data, sampling::{PreparedLight, reference}};
+//! let d65 = PreparedLight::for_grid(&data::D65, data::G4.lambda(), data::G4.interpolation())?;
+//! let fast = d65.xyz(&data::G4);
+//! let exact = reference::xyz(&data::D65, &data::G4);
+//! assert!((fast.y - exact.y).abs() <= 1e-12 * exact.y);
+//! let mut out = [speclab::Xyz::ZERO; 2];
+//! let samples: Vec<f64> = [data::G4.values(), data::A1.values()].concat();
+//! d65.batch(&samples, &mut out)?;
+//! assert!((out[0].y - exact.y).abs() <= 1e-12 * exact.y);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::borrow::Cow;
+
+use crate::sampling::weights::{self, Weights};
+use crate::spectrum::interp;
+use crate::spectrum::validate::{self, Field, Invalid, SampleError};
+use crate::spectrum::{data, observer};
+use crate::{Error, Interpolation, Role, TabulatedSpectrum, Xyz};
+
+/// A light with its exact weights for reflectances on one grid.
+#[derive(Clone, Debug)]
+pub struct PreparedLight<'a> {
+    light: &'a TabulatedSpectrum,
+    weights: Cow<'a, Weights>,
+}
+
+impl<'a> PreparedLight<'a> {
+    /// `light` prepared for reflectances sampled at `grid` (nm, strictly
+    /// increasing) and interpolated by `interpolation`. A built-in light on
+    /// the patches' 10 nm grid takes its compiled-in weights; otherwise the
+    /// weights are computed now (exactly, once).
+    pub fn for_grid(
+        light: &'a TabulatedSpectrum,
+        grid: &[f64],
+        interpolation: Interpolation,
+    ) -> Result<Self, Error> {
+        validate::validate(grid, &vec![0.0; grid.len()], Role::Reflectance, interpolation)?;
+        let weights = match data::builtin_weights(light) {
+            Some(w) if w.grid() == grid && w.interpolation() == interpolation => Cow::Borrowed(w),
+            _ => Cow::Owned(Weights::compute(&light.view(), &observer::views(), grid, interpolation)),
+        };
+        Ok(PreparedLight { light, weights })
+    }
+
+    /// The built-in weights of `light` if it is a built-in light (or a clone
+    /// of one) and `surface` is on their grid.
+    pub(crate) fn builtin(light: &'a TabulatedSpectrum, surface: &TabulatedSpectrum) -> Option<Self> {
+        let prepared = PreparedLight { light, weights: Cow::Borrowed(data::builtin_weights(light)?) };
+        prepared.fits(surface).then_some(prepared)
+    }
+
+    /// True if `surface` is on this light's grid, with its interpolation.
+    #[must_use]
+    pub fn fits(&self, surface: &TabulatedSpectrum) -> bool {
+        surface.interpolation() == self.weights.interpolation() && surface.lambda() == self.weights.grid()
+    }
+
+    /// The exact XYZ of the light times `surface`: equal to
+    /// [`crate::sampling::reference::xyz`] (to rounding), in O(samples) when
+    /// `surface` [fits](PreparedLight::fits), by exact integration otherwise.
+    #[must_use]
+    pub fn xyz(&self, surface: &TabulatedSpectrum) -> Xyz {
+        if !self.fits(surface) {
+            return super::reference::xyz_of_product(&[self.light, surface]);
+        }
+        let r = surface.values();
+        let mut sum = dot(self.weights.samples(), r);
+        let mut scratch = Vec::new();
+        for (k, _) in surface.clean().iter().enumerate().filter(|(_, clean)| !**clean) {
+            self.correct(&mut sum, r, k, surface.coeffs()[k], surface.bounds(), &mut scratch);
+        }
+        Xyz::new(sum[0], sum[1], sum[2])
+    }
+
+    /// The exact XYZ of the light times the reflectance with samples `r` on
+    /// this light's grid (each in `[0, 1]`), interpolated like the grid's.
+    pub fn xyz_samples(&self, r: &[f64]) -> Result<Xyz, Error> {
+        let mut out = [Xyz::ZERO];
+        self.batch(r, &mut out)?;
+        Ok(out[0])
+    }
+
+    /// The exact XYZ of each reflectance in `r`: consecutive runs of
+    /// `grid.len()` samples, each in `[0, 1]`, one per element of `out`.
+    /// Errors name the offending index in `r`. Allocates nothing per
+    /// spectrum (one scratch buffer, only if some cubic overshoots [0, 1]).
+    pub fn batch(&self, r: &[f64], out: &mut [Xyz]) -> Result<(), Error> {
+        let n = self.weights.grid().len();
+        if r.len() != out.len() * n {
+            let problem = Invalid::Lengths { lambda: out.len() * n, values: r.len() };
+            return Err(
+                SampleError { index: r.len().min(out.len() * n), field: Field::Value, problem }.into()
+            );
+        }
+        let mut scratch = Vec::new();
+        let cubic = self.weights.interpolation() == Interpolation::Cubic;
+        let margins = self.weights.margins();
+        // On an equidistant grid, margins for plain second differences: the
+        // middle segments' largest, and each end segment's own.
+        let scale = self.weights.step().filter(|_| cubic && n >= 5).map(|h| 1.0 / (2.0 * h * h));
+        let middle = scale.map(|s| s * margins[1..n - 2].iter().fold(0.0, |a: f64, &b| a.max(b)));
+        let w = self.weights.samples();
+        for (i, (y, o)) in r.chunks_exact(n).zip(out.iter_mut()).enumerate() {
+            let mut sum = dot(w, y);
+            let clear = match (scale, middle) {
+                (Some(scale), Some(middle)) => {
+                    let (lo, hi, second) = spread(y);
+                    let ends = end_clear(y, 0, 0, margins[0] * scale)
+                        & end_clear(y, n - 2, n - 4, margins[n - 2] * scale);
+                    (lo - middle * second >= 0.0) & (hi + middle * second <= 1.0) & ends
+                }
+                _ => !cubic && y.iter().all(|v| (0.0..=1.0).contains(v)),
+            };
+            // NaN anywhere makes the sum NaN.
+            if !clear || sum.iter().any(|s| s.is_nan()) {
+                if let Some(e) = invalid_sample(r, i * n, n) {
+                    return Err(e);
+                }
+                if cubic {
+                    self.correct_overshoots(&mut sum, y, &mut scratch);
+                }
+            }
+            *o = Xyz::new(sum[0], sum[1], sum[2]);
+        }
+        Ok(())
+    }
+
+    /// Replaces the weighted term of every segment of `y` whose cubic the
+    /// clamp to `[0, 1]` acts on by its exact integral. The Bernstein hull
+    /// clears almost every segment in a few operations.
+    #[cold]
+    #[inline(never)]
+    fn correct_overshoots(&self, sum: &mut [f64; 3], y: &[f64], scratch: &mut Vec<f64>) {
+        let grid = self.weights.grid();
+        for (k, beta) in self.weights.hull().iter().enumerate() {
+            let s = interp::stencil(k, y.len());
+            let ys = [y[s], y[s + 1], y[s + 2], y[s + 3]];
+            let b1 = beta[0][0] * ys[0] + beta[0][1] * ys[1] + beta[0][2] * ys[2] + beta[0][3] * ys[3];
+            let b2 = beta[1][0] * ys[0] + beta[1][1] * ys[1] + beta[1][2] * ys[2] + beta[1][3] * ys[3];
+            if (0.0..=1.0).contains(&b1) && (0.0..=1.0).contains(&b2) {
+                continue;
+            }
+            let c = interp::cubic_segment(grid, y, k);
+            let (_, crossings) = interp::crossings(c, [0.0, 1.0], grid[k + 1] - grid[k]);
+            let mid = interp::segment_value(c, 0.5 * (grid[k + 1] - grid[k]));
+            if crossings > 0 || !(0.0..=1.0).contains(&mid) {
+                self.correct(sum, y, k, c, [0.0, 1.0], scratch);
+            }
+        }
+    }
+
+    /// `sum` with segment `k`'s weighted term replaced by its exact integral
+    /// for the clamped polynomial `c`.
+    fn correct(
+        &self,
+        sum: &mut [f64; 3],
+        y: &[f64],
+        k: usize,
+        c: interp::Coeffs,
+        bounds: [f64; 2],
+        scratch: &mut Vec<f64>,
+    ) {
+        let (w, s) = self.weights.segment(k);
+        for (j, wj) in w.iter().enumerate() {
+            for ch in 0..3 {
+                sum[ch] -= wj[ch] * y[s + j];
+            }
+        }
+        let grid = self.weights.grid();
+        let exact = weights::segment_exact(
+            &self.light.view(),
+            &observer::views(),
+            [grid[k], grid[k + 1]],
+            c,
+            bounds,
+            self.weights.range(),
+            scratch,
+        );
+        for ch in 0..3 {
+            sum[ch] += exact[ch];
+        }
+    }
+}
+
+/// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|, in two
+/// independent lanes (packed arithmetic). With every middle segment's
+/// margin C, `lo − C·second ≥ 0` and `hi + C·second ≤ 1` clear them all: a
+/// segment's inner Bernstein coefficients lie within C·second of its
+/// linear interpolation, itself within [lo, hi]. (NaN slips through here;
+/// the caller checks the sum.)
+#[inline(always)]
+fn spread(y: &[f64]) -> (f64, f64, f64) {
+    let n = y.len();
+    let (mut lo, mut hi, mut second) = ([y[0]; 2], [y[0]; 2], [0.0f64; 2]);
+    let pairs = n.saturating_sub(2) / 2;
+    let head = &y[..2 * pairs + 2];
+    for p in 0..pairs {
+        for l in 0..2 {
+            let i = 2 * p + l;
+            let (a, b, c) = (head[i], head[i + 1], head[i + 2]);
+            lo[l] = if a < lo[l] { a } else { lo[l] };
+            hi[l] = if a > hi[l] { a } else { hi[l] };
+            let d = (a - 2.0 * b + c).abs();
+            second[l] = if d > second[l] { d } else { second[l] };
+        }
+    }
+    for j in 2 * pairs..n {
+        lo[0] = if y[j] < lo[0] { y[j] } else { lo[0] };
+        hi[0] = if y[j] > hi[0] { y[j] } else { hi[0] };
+        if j + 2 < n {
+            let d = (y[j] - 2.0 * y[j + 1] + y[j + 2]).abs();
+            second[0] = if d > second[0] { d } else { second[0] };
+        }
+    }
+    let pick = |a: [f64; 2], smaller: bool| if (a[0] < a[1]) == smaller { a[0] } else { a[1] };
+    (pick(lo, true), pick(hi, false), pick(second, false))
+}
+
+/// An end segment `k` (stencil from `s`) is clear: its samples' range,
+/// widened by `margin` times its stencil's larger |second difference|,
+/// stays in `[0, 1]`.
+#[inline(always)]
+fn end_clear(y: &[f64], k: usize, s: usize, margin: f64) -> bool {
+    let second = |i: usize| (y[i] - 2.0 * y[i + 1] + y[i + 2]).abs();
+    let (d0, d1) = (second(s), second(s + 1));
+    let e = margin * if d0 > d1 { d0 } else { d1 };
+    let (lo, hi) = if y[k] < y[k + 1] { (y[k], y[k + 1]) } else { (y[k + 1], y[k]) };
+    (lo - e >= 0.0) & (hi + e <= 1.0)
+}
+
+/// The error for the first sample of `r[from..from + n]` that is not a
+/// number in `[0, 1]`, if there is one.
+fn invalid_sample(r: &[f64], from: usize, n: usize) -> Option<Error> {
+    let index = (from..from + n).find(|&i| !(0.0..=1.0).contains(&r[i]))?;
+    let value = r[index];
+    let problem = if value.is_finite() {
+        Invalid::OutOfRange { value, min: 0.0, max: 1.0 }
+    } else {
+        Invalid::NonFinite { value }
+    };
+    Some(SampleError { index, field: Field::Value, problem }.into())
+}
+
+/// `Σᵢ wᵢ·yᵢ` per channel, in two interleaved partial sums kept in
+/// registers (index loops over slices of one length, so bounds checks hoist
+/// out of the loop).
+#[inline(always)]
+fn dot(w: &[[f64; 3]], y: &[f64]) -> [f64; 3] {
+    let n = w.len().min(y.len());
+    let (w, y) = (&w[..n], &y[..n]);
+    let (mut even, mut odd) = ([0.0; 3], [0.0; 3]);
+    for i in 0..n / 2 {
+        let (a, b) = (2 * i, 2 * i + 1);
+        for ch in 0..3 {
+            even[ch] += w[a][ch] * y[a];
+            odd[ch] += w[b][ch] * y[b];
+        }
+    }
+    if n % 2 == 1 {
+        for ch in 0..3 {
+            even[ch] += w[n - 1][ch] * y[n - 1];
+        }
+    }
+    [even[0] + odd[0], even[1] + odd[1], even[2] + odd[2]]
+}

@@ -1,0 +1,134 @@
+//! The fast exact reference (a light's weights dotted with a reflectance's
+//! samples, exact integration where a clamp acts) equals integration piece
+//! by piece, `reference::xyz_of_product`, to 1e-12 relative: for every
+//! built-in cell, for reflectances whose cubic overshoots [0, 1], for lights
+//! prepared at run time, and through the batch.
+
+use proptest::prelude::*;
+use speclab::data::{Light, Patch};
+use speclab::sampling::{PreparedLight, reference};
+use speclab::{Error, Interpolation, Role, TabulatedSpectrum, Xyz};
+
+/// Rounding only: the two routes sum the same exact integrals differently.
+const ROUNDING: f64 = 1e-12;
+
+fn close(fast: Xyz, slow: Xyz, scale: f64) -> bool {
+    (fast - slow).to_array().iter().all(|d| d.abs() <= ROUNDING * scale)
+}
+
+fn grid() -> Vec<f64> {
+    (0..36).map(|i| 380.0 + 10.0 * f64::from(i)).collect()
+}
+
+fn reflectance(values: Vec<f64>) -> TabulatedSpectrum {
+    TabulatedSpectrum::new(grid(), values, Role::Reflectance).expect("valid")
+}
+
+#[test]
+fn builtin_cells_equal_piecewise_integration() {
+    for light in Light::ALL {
+        for patch in Patch::ALL {
+            let (l, s) = (light.spectrum(), patch.spectrum());
+            let (fast, slow) = (reference::xyz(l, s), reference::xyz_of_product(&[l, s]));
+            for (f, w) in fast.to_array().iter().zip(slow.to_array()) {
+                assert!((f - w).abs() <= ROUNDING * w.abs(), "{light:?} × {patch:?}: {fast:?} vs {slow:?}");
+            }
+        }
+    }
+}
+
+/// Samples alternating 1, 0.02, 0.02: the cubic overshoots 1 and dips below
+/// 0 in many segments; those are integrated exactly.
+#[test]
+fn clamped_segments_are_integrated_exactly() {
+    let values: Vec<f64> = (0..36).map(|i| if i % 3 == 0 { 1.0 } else { 0.02 }).collect();
+    let s = reflectance(values.clone());
+    for light in Light::ALL {
+        let l = light.spectrum();
+        let white = reference::white(l).y;
+        let slow = reference::xyz_of_product(&[l, &s]);
+        assert!(close(reference::xyz(l, &s), slow, white), "{light:?}");
+        let prepared = PreparedLight::for_grid(l, &grid(), Interpolation::Cubic).expect("valid grid");
+        assert!(close(prepared.xyz_samples(&values).expect("in range"), slow, white), "{light:?} raw");
+        // Ignoring the clamp would be wrong: the weights alone differ.
+        let unclamped: Xyz = {
+            let flat = reflectance(values.iter().map(|v| v * 0.5 + 0.25).collect());
+            (reference::xyz(l, &flat) - reference::xyz(l, &reflectance(vec![0.25; 36]))) * 2.0
+        };
+        assert!(!close(unclamped, slow, white), "the clamp matters here");
+    }
+}
+
+/// A light prepared at run time (a loaded, non-uniform one here) gives the
+/// same as integration, and so does a surface off the light's grid.
+#[test]
+fn runtime_light_and_other_grids() {
+    let lamp = TabulatedSpectrum::new(
+        vec![380.0, 400.0, 451.5, 500.0, 545.0, 546.0, 600.0, 650.0, 730.0],
+        vec![0.5, 0.8, 1.5, 1.0, 1.0, 20.0, 2.0, 1.2, 0.7],
+        Role::Light,
+    )
+    .expect("valid");
+    let prepared = PreparedLight::for_grid(&lamp, &grid(), Interpolation::Cubic).expect("valid grid");
+    let white = reference::white(&lamp).y;
+    for patch in Patch::ALL {
+        let s = patch.spectrum();
+        assert!(prepared.fits(s));
+        assert!(close(prepared.xyz(s), reference::xyz_of_product(&[&lamp, s]), white), "{patch:?}");
+    }
+    let coarse =
+        TabulatedSpectrum::new(vec![380.0, 500.0, 600.0, 730.0], vec![0.2, 0.4, 0.6, 0.8], Role::Reflectance)
+            .expect("valid");
+    assert!(!prepared.fits(&coarse));
+    assert!(close(prepared.xyz(&coarse), reference::xyz_of_product(&[&lamp, &coarse]), white));
+    let linear = PreparedLight::for_grid(&lamp, &grid(), Interpolation::Linear).expect("valid grid");
+    let s = TabulatedSpectrum::with_interpolation(
+        grid(),
+        Patch::G4.spectrum().values().to_vec(),
+        Role::Reflectance,
+        Interpolation::Linear,
+    )
+    .expect("valid");
+    assert!(linear.fits(&s));
+    assert!(close(linear.xyz(&s), reference::xyz_of_product(&[&lamp, &s]), white), "linear reflectances");
+}
+
+#[test]
+fn batch_errors_name_the_index() {
+    let d65 =
+        PreparedLight::for_grid(Light::D65.spectrum(), &grid(), Interpolation::Cubic).expect("valid grid");
+    let mut out = [Xyz::ZERO; 2];
+    let err = d65.batch(&[0.5; 71], &mut out).unwrap_err();
+    assert_eq!(err.to_string(), "values: expected 72 values, one per wavelength, found 71");
+    let mut bad = vec![0.5; 72];
+    bad[40] = 1.5;
+    assert_eq!(
+        d65.batch(&bad, &mut out).unwrap_err().to_string(),
+        "values[40]: expected a value in [0, 1], found 1.5"
+    );
+    bad[40] = f64::NAN;
+    assert!(matches!(d65.batch(&bad, &mut out), Err(Error::Sample(_))));
+    assert!(
+        PreparedLight::for_grid(Light::D65.spectrum(), &[380.0, 370.0, 400.0, 500.0], Interpolation::Cubic)
+            .is_err()
+    );
+}
+
+proptest! {
+    /// Any reflectance on the grid, extremes included, through the batch.
+    #[test]
+    fn batch_equals_integration(
+        values in prop::collection::vec(prop_oneof![Just(0.0), Just(1.0), 0.0..=1.0f64], 72),
+        light in 0..3usize,
+    ) {
+        let l = Light::ALL[light].spectrum();
+        let prepared = PreparedLight::for_grid(l, &grid(), Interpolation::Cubic).expect("valid grid");
+        let mut out = [Xyz::ZERO; 2];
+        prepared.batch(&values, &mut out).expect("in range");
+        let white = reference::white(l).y;
+        for (chunk, got) in values.chunks(36).zip(out) {
+            let slow = reference::xyz_of_product(&[l, &reflectance(chunk.to_vec())]);
+            prop_assert!(close(got, slow, white), "{:?} vs {:?}", got, slow);
+        }
+    }
+}
