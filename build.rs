@@ -27,6 +27,9 @@ mod interp;
 #[path = "src/io/json.rs"]
 mod json;
 #[allow(dead_code)]
+#[path = "src/sampling/light_pdf.rs"]
+mod light_pdf;
+#[allow(dead_code)]
 #[path = "src/sampling/quadrature.rs"]
 mod quadrature;
 #[allow(dead_code)]
@@ -53,7 +56,7 @@ mod spectrum {
     pub(crate) use super::{interp, range, validate};
 }
 mod sampling {
-    pub(crate) use super::quadrature;
+    pub(crate) use super::{quadrature, weights};
 }
 
 use validate::Role;
@@ -75,8 +78,7 @@ const SPECTRA: [(&str, &str, Role); 12] = [
 ];
 
 fn main() {
-    for file in ["codegen.rs", "error.rs", "io", "spectrum", "sampling/quadrature.rs", "sampling/weights.rs"]
-    {
+    for file in ["codegen.rs", "error.rs", "io", "spectrum", "sampling"] {
         println!("cargo:rerun-if-changed=src/{file}");
     }
     let mut code = codegen::Codegen::new().with_crate_path("crate");
@@ -114,6 +116,14 @@ fn light_weights(code: &codegen::Codegen) -> String {
     for light in ["A", "D65", "F11"] {
         let w = weights::Weights::compute(&view(light), &cmf, grid, validate::Interpolation::Cubic);
         out += &w.to_source(&format!("{light}_WEIGHTS"), "crate");
+        // The wavelength pdfs that follow the light: α = 1, and α꜀ = 1/white꜀.
+        let white = weights::white(&view(light), &cmf);
+        let balanced = white.map(|w| if w > 0.0 { 1.0 / w } else { 0.0 });
+        for (kind, alpha) in [("LIGHT", [1.0; 3]), ("BALANCED", balanced)] {
+            let pdf =
+                light_pdf::PiecewisePdf::new(&view(light), &cmf, alpha).expect("built-in lights are bright");
+            out += &pdf.to_source(&format!("{light}_PDF_{kind}"), "crate");
+        }
     }
     out
 }

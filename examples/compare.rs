@@ -29,7 +29,9 @@ usage: compare [options]
   --seed S       seed of the single estimates and base seed of the trials (default 1)
   --trials T     trials for the RMS ΔE00 column (default 200)
   --normalize none|power|luminance   scale the light first (default none)
-  --white-balance                    Bradford-adapt the light's white to D65's before sRGB";
+  --white-balance                    Bradford-adapt the light's white to D65's before sRGB
+  --pdf uniform|visible|light|balanced           random and hero wavelengths' density (default uniform)
+  --strata independent|jitter|kronecker          how their primary numbers are spread (default independent)";
 
 struct Args {
     light: Choice,
@@ -69,6 +71,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("trials") => s.trials = parser.value()?.parse()?,
             Long("normalize") => s.viewing.normalize = common::normalization(&parser.value()?.string()?)?,
             Long("white-balance") => s.viewing.white_balance = true,
+            Long("pdf") => s.sampling.pdf = common::pdf(&parser.value()?.string()?)?,
+            Long("strata") => s.sampling.strata = common::strata(&parser.value()?.string()?)?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);

@@ -16,6 +16,8 @@ use std::process::ExitCode;
 
 use common::{fail, finish};
 use speclab::Role;
+use speclab::sampling::strata::Strata;
+use speclab::study::sampling::{Pdf, Sampling};
 use speclab::study::scene::{self, Choice};
 use speclab::study::{convergence, report};
 
@@ -29,7 +31,10 @@ usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--all] 
   --all           all 18 light × surface pairs
   --csv           machine-readable rows
   --summary       per light, the first n and M with RMS ΔE00 < 1 and < 0.5 for every patch,
-                  and the count from which it stays below (implies --all)";
+                  and the count from which it stays below (implies --all, and every pdf and strata
+                  unless --pdf or --strata is given)
+  --pdf PDF       random and hero wavelengths' density: uniform (default), visible, light, balanced, all
+  --strata S      how their primary numbers are spread: independent (default), jitter, kronecker, all";
 
 struct Args {
     light: Choice,
@@ -39,6 +44,8 @@ struct Args {
     all: bool,
     csv: bool,
     summary: bool,
+    pdfs: Option<Vec<Pdf>>,
+    strata: Option<Vec<Strata>>,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -51,6 +58,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         all: false,
         csv: false,
         summary: false,
+        pdfs: None,
+        strata: None,
     };
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
@@ -64,6 +73,14 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("all") => a.all = true,
             Long("csv") => a.csv = true,
             Long("summary") => a.summary = true,
+            Long("pdf") => {
+                let v = parser.value()?.string()?;
+                a.pdfs = Some(if v == "all" { Pdf::ALL.to_vec() } else { vec![common::pdf(&v)?] });
+            }
+            Long("strata") => {
+                let v = parser.value()?.string()?;
+                a.strata = Some(if v == "all" { Strata::ALL.to_vec() } else { vec![common::strata(&v)?] });
+            }
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);
@@ -75,6 +92,18 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     Ok(a)
 }
 
+/// Every pdf × strata asked for; all of them for a summary that names none.
+fn samplings(args: &Args) -> Vec<Sampling> {
+    let every = args.summary && args.pdfs.is_none() && args.strata.is_none();
+    let pdfs =
+        args.pdfs.clone().unwrap_or_else(|| if every { Pdf::ALL.to_vec() } else { vec![Pdf::Uniform] });
+    let strata = args
+        .strata
+        .clone()
+        .unwrap_or_else(|| if every { Strata::ALL.to_vec() } else { vec![Strata::Independent] });
+    pdfs.iter().flat_map(|&pdf| strata.iter().map(move |&strata| Sampling { pdf, strata })).collect()
+}
+
 fn rows(args: &Args) -> Result<Vec<convergence::Row>, speclab::Error> {
     let (lights, surfaces) = if args.all {
         (scene::builtin_lights(), scene::builtin_surfaces())
@@ -84,7 +113,7 @@ fn rows(args: &Args) -> Result<Vec<convergence::Row>, speclab::Error> {
     let mut rows = Vec::new();
     for light in &lights {
         for surface in &surfaces {
-            rows.extend(convergence::sequence(light, surface, args.trials, args.seed)?);
+            rows.extend(convergence::sequence(light, surface, &samplings(args), args.trials, args.seed)?);
         }
     }
     Ok(rows)

@@ -22,6 +22,7 @@ use speclab::study::scene::{Choice, Named};
 const USAGE: &str = "\
 usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-file PATH]
             [--normalize none|power|luminance] [--white-balance]
+            [--pdf uniform|visible|light|balanced] [--strata independent|jitter|kronecker]
   --n N                samples for random and hero (default 100)
   --m M                buckets for regular sampling, 1 to 64 (default 16)
   --seed S             base seed of the random methods (default 1)
@@ -30,7 +31,9 @@ usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-fi
   --surface-file PATH  use this reflectance instead of the six patches
   --normalize MODE     scale each light first: none (default, as Appendix 2),
                        power (mean power 1 over 380-730 nm), luminance (white Y = 100)
-  --white-balance      Bradford-adapt each light's white to D65's before sRGB";
+  --white-balance      Bradford-adapt each light's white to D65's before sRGB
+  --pdf PDF            random and hero wavelengths' density (default uniform, as the assignment)
+  --strata STRATA      how their primary numbers are spread (default independent)";
 
 struct Args {
     grid: Grid,
@@ -61,6 +64,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("surface-file") => args.surfaces = vec![Choice::File(parser.value()?.into())],
             Long("normalize") => args.viewing.normalize = common::normalization(&parser.value()?.string()?)?,
             Long("white-balance") => args.viewing.white_balance = true,
+            Long("pdf") => args.grid.sampling.pdf = common::pdf(&parser.value()?.string()?)?,
+            Long("strata") => args.grid.sampling.strata = common::strata(&parser.value()?.string()?)?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);

@@ -75,6 +75,9 @@ pub enum Error {
         /// The names that exist.
         expected: &'static str,
     },
+    /// A light with no power where the observer sees, within 380–730 nm: no
+    /// wavelength pdf can follow it.
+    DarkLight,
     /// A name for generated code that is not a Rust identifier.
     Identifier {
         /// The name given.
@@ -105,6 +108,9 @@ impl fmt::Display for Error {
             }
             Error::UnknownSpectrum { name, expected } => write!(f, "expected {expected}, found {name:?}"),
             Error::Identifier { name } => write!(f, "expected a Rust identifier, found {name:?}"),
+            Error::DarkLight => {
+                write!(f, "expected a light with power where the observer sees (380-730 nm), found none")
+            }
         }
     }
 }

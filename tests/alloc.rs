@@ -78,6 +78,32 @@ fn per_sample_path_does_not_allocate() {
     assert_eq!(count, 0, "the per-sample path allocated {count} times");
 }
 
+/// Drawing wavelengths from any of the library's pdfs, spread by any
+/// strata, allocates nothing (the built-in lights' pdfs are static tables).
+#[test]
+fn pdfs_and_strata_do_not_allocate() {
+    use rand::SeedableRng;
+    use speclab::sampling::pdf::{LightPdf, Visible};
+    use speclab::sampling::strata::Strata;
+    let (light, balanced) =
+        (LightPdf::light(&data::F11).expect("bright"), LightPdf::balanced(&data::A).expect("bright"));
+    let mut rng = rand::rngs::StdRng::seed_from_u64(5);
+    let count = allocations(|| {
+        let mut pixel = speclab::Xyz::ZERO;
+        for strata in Strata::ALL {
+            for u in strata.points(64, 4, &mut rng) {
+                let h = HeroSample::<4>::from_pdf(u, &light);
+                pixel += h.to_xyz(data::F11.sample(&h) * data::G4.sample(&h));
+                let h = HeroSample::<4>::from_pdf(u, &Visible);
+                pixel += h.to_xyz(data::A.sample(&h));
+                pixel += HeroSample::<1>::from_pdf(u, &balanced).to_xyz(SampledSpectrum::splat(1.0));
+            }
+        }
+        black_box(pixel);
+    });
+    assert_eq!(count, 0, "allocated {count} times");
+}
+
 /// Bucketing a spectrum, the fast exact reference and the batch allocate
 /// nothing either (the batch's scratch buffer is only for cubics that
 /// overshoot [0, 1], which these patches' do not).

@@ -111,7 +111,8 @@ proptest! {
         prop_assert!(terminated.to_xyz(data::F11.sample(&h) * data::A1.sample(&h)).is_finite());
         let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
         for k in [0, 1, 4, 5, usize::MAX] {
-            let result = hero::estimate_dyn(k, &data::A, &data::J4, NonZeroUsize::MIN, &mut rng);
+            let (pdf, strata) = (speclab::sampling::pdf::Uniform, speclab::sampling::strata::Strata::Independent);
+            let result = hero::estimate_dyn(k, &data::A, &data::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
             prop_assert_eq!(result.is_ok(), hero::WIDTHS.contains(&k));
         }
     }
@@ -132,6 +133,28 @@ proptest! {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Every pdf maps any number to a wavelength in 380–730 nm, and gives a
+    /// finite, non-negative density and a CDF in [0, 1] at any wavelength.
+    #[test]
+    fn pdfs_take_any_numbers(u in any_f64(), lambda in any_f64(), n in 0..50usize, k in 0..6usize, seed in any::<u64>()) {
+        use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
+        use speclab::sampling::strata::Strata;
+        let pdfs: [&dyn WavelengthPdf; 4] = [&Uniform, &Visible, &LightPdf::light(&data::F11).expect("bright"), &LightPdf::balanced(&data::A).expect("bright")];
+        for p in pdfs {
+            let l = p.sample(u);
+            prop_assert!((380.0..=730.0).contains(&l), "{}", l);
+            let (d, c) = (p.pdf(lambda), p.cdf(lambda));
+            prop_assert!(d.is_finite() && d >= 0.0 && (0.0..=1.0).contains(&c), "{} {}", d, c);
+            prop_assert!(HeroSample::<4>::from_pdf(u, &p).to_xyz(data::D65.sample(&HeroSample::<4>::new(u))).is_finite());
+        }
+        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+        for strata in Strata::ALL {
+            let points: Vec<f64> = strata.points(n, k, &mut rng).collect();
+            prop_assert_eq!(points.len(), n);
+            prop_assert!(points.iter().all(|u| (0.0..1.0).contains(u)));
+        }
+    }
 
     /// Preparing a light for any grid, and converting any slice, returns a
     /// value or an error.

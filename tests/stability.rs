@@ -110,7 +110,7 @@ fn spread_matches_theory() {
         for patch in Patch::ALL {
             let (l, s) = (light.spectrum(), patch.spectrum());
             for (method, var) in
-                [(Method::Random, variance::hero::<1>(l, s)), (Method::HERO, variance::hero::<4>(l, s))]
+                [(Method::RANDOM, variance::hero::<1>(l, s)), (Method::HERO, variance::hero::<4>(l, s))]
             {
                 let runs: Vec<Xyz> =
                     (0..TRIALS).map(|t| method.xyz(l, s, nz(1), derive_seed(11, t)).expect("xyz")).collect();
@@ -177,7 +177,7 @@ fn gamut_flag_agrees_with_reference() {
     for (light, patch) in cells {
         let (l, s) = (light.spectrum(), patch.spectrum());
         assert!(!reference::xyz(l, s).to_linear_srgb().in_gamut(), "{light:?} {patch:?}");
-        for (method, bound) in [(Method::HERO, 0.80), (Method::Random, 0.65)] {
+        for (method, bound) in [(Method::HERO, 0.80), (Method::RANDOM, 0.65)] {
             let stats = trials::method(l, s, method, nz(100), nz(2000), 5).expect("study");
             let agree = 1.0 - stats.false_in_gamut.expect("reference out of gamut");
             eprintln!(

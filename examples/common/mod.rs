@@ -3,7 +3,9 @@
 use std::io;
 use std::process::ExitCode;
 
+use speclab::sampling::strata::Strata;
 use speclab::study::remarks::Normalization;
+use speclab::study::sampling::Pdf;
 
 /// Prints `message` as the program's error and returns exit status 2.
 pub fn fail(program: &str, message: impl std::fmt::Display) -> ExitCode {
@@ -17,6 +19,18 @@ pub fn finish(program: &str, written: io::Result<()>) -> ExitCode {
         Err(e) if e.kind() != io::ErrorKind::BrokenPipe => fail(program, e),
         _ => ExitCode::SUCCESS,
     }
+}
+
+/// The `--pdf` value, or a message naming the choices.
+pub fn pdf(name: &str) -> Result<Pdf, String> {
+    Pdf::from_name(name)
+        .ok_or_else(|| format!("unknown pdf {name:?}: expected uniform, visible, light or balanced"))
+}
+
+/// The `--strata` value, or a message naming the choices.
+pub fn strata(name: &str) -> Result<Strata, String> {
+    Strata::from_name(name)
+        .ok_or_else(|| format!("unknown strata {name:?}: expected independent, jitter or kronecker"))
 }
 
 /// The `--normalize` value, or a message naming the choices.

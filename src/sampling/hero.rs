@@ -33,9 +33,11 @@
 
 use std::num::NonZeroUsize;
 
-use rand::{Rng, RngExt};
+use rand::Rng;
 
 use crate::sampling::SampledSpectrum;
+use crate::sampling::pdf::{Uniform, WavelengthPdf};
+use crate::sampling::strata::Strata;
 use crate::spectrum::observer;
 use crate::{Error, LAMBDA_MIN, TabulatedSpectrum, WIDTH, Xyz};
 
@@ -89,6 +91,25 @@ impl<const K: usize> HeroSample<K> {
             *w = reciprocal;
         }
         Ok(HeroSample { lambda, inv_pdf })
+    }
+
+    /// The sample for `u` under the density `pdf`, rotated in primary-sample
+    /// space: `λⱼ = P⁻¹((u + j/K) mod 1)`, so that every `λⱼ` has density p
+    /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased. With
+    /// [`Uniform`](crate::sampling::pdf::Uniform) this is
+    /// [`HeroSample::new`]. `u` is taken as in [`HeroSample::new`].
+    #[inline]
+    #[must_use]
+    pub fn from_pdf(u: f64, pdf: &impl WavelengthPdf) -> Self {
+        let () = Self::NONZERO;
+        let u = fract(u);
+        let (mut lambda, mut inv_pdf) = ([0.0; K], [0.0; K]);
+        for (j, (l, w)) in lambda.iter_mut().zip(&mut inv_pdf).enumerate() {
+            let v = u + j as f64 / K as f64;
+            *l = pdf.sample(if v >= 1.0 { v - 1.0 } else { v });
+            *w = pdf.inv_pdf(*l);
+        }
+        HeroSample { lambda, inv_pdf }
     }
 
     /// The wavelengths, nm; the hero first.
@@ -196,20 +217,10 @@ impl TabulatedSpectrum {
     }
 }
 
-/// The XYZ of one uniform sample of `light × surface` drawn with `rng`.
-#[inline]
-pub(crate) fn sample_xyz<const K: usize, R: Rng + ?Sized>(
-    light: &TabulatedSpectrum,
-    surface: &TabulatedSpectrum,
-    rng: &mut R,
-) -> Xyz {
-    let h = HeroSample::<K>::new(rng.random::<f64>());
-    h.to_xyz(light.sample(&h) * surface.sample(&h))
-}
-
-/// The mean of `n` one-sample estimates of `light × surface`, each drawn
-/// with `rng`; accumulates in f64. The same seed gives the same result.
-/// `n` is non-zero by type: a mean of no samples does not exist.
+/// The mean of `n` one-sample estimates of `light × surface`, wavelengths
+/// uniform and independent, drawn with `rng`; accumulates in f64. The same
+/// seed gives the same result. `n` is non-zero by type: a mean of no
+/// samples does not exist.
 #[must_use]
 pub fn estimate<const K: usize, R: Rng + ?Sized>(
     light: &TabulatedSpectrum,
@@ -217,29 +228,52 @@ pub fn estimate<const K: usize, R: Rng + ?Sized>(
     n: NonZeroUsize,
     rng: &mut R,
 ) -> Xyz {
-    let sum: Xyz = (0..n.get()).map(|_| sample_xyz::<K, R>(light, surface, rng)).sum();
+    estimate_with::<K, R>(light, surface, n, &Uniform, Strata::Independent, rng)
+}
+
+/// [`estimate`] with wavelengths drawn from `pdf` and the n primary numbers
+/// spread by `strata`: unbiased for every pdf that is positive wherever
+/// `light × surface` is, and every strata.
+#[must_use]
+pub fn estimate_with<const K: usize, R: Rng + ?Sized>(
+    light: &TabulatedSpectrum,
+    surface: &TabulatedSpectrum,
+    n: NonZeroUsize,
+    pdf: &impl WavelengthPdf,
+    strata: Strata,
+    rng: &mut R,
+) -> Xyz {
+    let sum: Xyz = strata
+        .points(n.get(), K, rng)
+        .map(|u| {
+            let h = HeroSample::<K>::from_pdf(u, pdf);
+            h.to_xyz(light.sample(&h) * surface.sample(&h))
+        })
+        .sum();
     sum / n.get() as f64
 }
 
 /// The hero widths K that [`estimate_dyn`] dispatches to compiled instances.
 pub const WIDTHS: [usize; 6] = [1, 2, 3, 4, 8, 16];
 
-/// [`estimate`] for a hero width `k` known only at run time: dispatches to
-/// `HeroSample<K>` for K in [`WIDTHS`], an error otherwise.
+/// [`estimate_with`] for a hero width `k` known only at run time:
+/// dispatches to `HeroSample<K>` for K in [`WIDTHS`], an error otherwise.
 pub fn estimate_dyn<R: Rng + ?Sized>(
     k: usize,
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
     n: NonZeroUsize,
+    pdf: &impl WavelengthPdf,
+    strata: Strata,
     rng: &mut R,
 ) -> Result<Xyz, Error> {
     Ok(match k {
-        1 => estimate::<1, R>(light, surface, n, rng),
-        2 => estimate::<2, R>(light, surface, n, rng),
-        3 => estimate::<3, R>(light, surface, n, rng),
-        4 => estimate::<4, R>(light, surface, n, rng),
-        8 => estimate::<8, R>(light, surface, n, rng),
-        16 => estimate::<16, R>(light, surface, n, rng),
+        1 => estimate_with::<1, R>(light, surface, n, pdf, strata, rng),
+        2 => estimate_with::<2, R>(light, surface, n, pdf, strata, rng),
+        3 => estimate_with::<3, R>(light, surface, n, pdf, strata, rng),
+        4 => estimate_with::<4, R>(light, surface, n, pdf, strata, rng),
+        8 => estimate_with::<8, R>(light, surface, n, pdf, strata, rng),
+        16 => estimate_with::<16, R>(light, surface, n, pdf, strata, rng),
         _ => return Err(Error::UnsupportedHeroWidth { k }),
     })
 }

@@ -6,13 +6,19 @@
 //! - [`RegularSpectrum<M, B>`](RegularSpectrum): M fixed buckets over
 //!   380–730 nm, filled by centre samples ([`Centre`]) or exact bucket means
 //!   ([`BoxAverage`]).
-//! - [`reference`]: the exact integral, which the estimates are judged by.
+//! - [`pdf`]: wavelength densities (uniform, visible, following a light)
+//!   behind the [`pdf::WavelengthPdf`] trait; [`strata`]: how the primary
+//!   numbers of an estimate are spread (independent, jittered, Kronecker).
+//! - [`reference`]: the exact integral, which the estimates are judged by;
+//!   [`PreparedLight`]: the same as a dot product, for many reflectances.
 //!
 //! One estimator serves all: XYZ ≈ Σ c̄(λ)·value(λ) / pdf(λ), averaged. A
 //! strategy only chooses the wavelengths and their pdf. **A new wavelength
-//! distribution** is a function from a uniform number to wavelengths and
-//! pdfs, handed to [`HeroSample::with_pdf`]; the estimator, the tests of
-//! unbiasedness and the study take it from there.
+//! distribution** implements [`pdf::WavelengthPdf`] (`sample`, `pdf`,
+//! `cdf`) in `pdf.rs` or in the renderer; [`HeroSample::from_pdf`] rotates
+//! it in primary-sample space, and [`hero::estimate_with`], the exact
+//! variances and the study take it from there. Wavelengths from elsewhere
+//! enter through [`HeroSample::with_pdf`].
 //!
 //! ```
 //! use speclab::{data, HeroSample, RegularSpectrum, sampling::reference};
@@ -24,11 +30,14 @@
 //! ```
 
 pub mod hero;
+pub(crate) mod light_pdf;
+pub mod pdf;
 mod prepared;
 pub(crate) mod quadrature;
 pub mod reference;
 pub mod regular;
 mod sampled;
+pub mod strata;
 pub(crate) mod weights;
 
 pub use hero::HeroSample;

@@ -18,8 +18,8 @@
 //! assert!((rgb.g - 82.44).abs() < 0.05); // Appendix 2: 80.79, 82.44, 80.84
 //! ```
 
-use crate::sampling::PreparedLight;
 use crate::sampling::quadrature::{self, GAUSS_5};
+use crate::sampling::{PreparedLight, weights};
 use crate::spectrum::observer;
 use crate::{LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, Xyz};
 
@@ -38,7 +38,8 @@ pub fn xyz(light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Xyz {
 /// XYZ of the perfect white (reflectance 1 over 380–730 nm) under `light`.
 #[must_use]
 pub fn white(light: &TabulatedSpectrum) -> Xyz {
-    xyz_of_product(&[light])
+    let [x, y, z] = weights::white(&light.view(), &observer::views());
+    Xyz::new(x, y, z)
 }
 
 /// XYZ of the product of `factors` over 380–730 nm and their common

@@ -318,6 +318,22 @@ fn pieces_into(out: &mut Vec<f64>, a: f64, b: f64, range: [f64; 2], views: [&Vie
     true
 }
 
+/// The XYZ of the perfect white under `light`: `∫ L·c̄` over 380–730 nm ∩
+/// the light's support, exactly (the one computation of the white, at
+/// build time and at run time).
+pub(crate) fn white(light: &View, cmf: &[View; 3]) -> [f64; 3] {
+    let range = [LAMBDA_MIN, LAMBDA_MAX];
+    let (a, b) = (light.lambda[0], light.lambda[light.lambda.len() - 1]);
+    let mut pieces = Vec::new();
+    if !pieces_into(&mut pieces, a, b, range, [light, &cmf[0], &cmf[1], &cmf[2]]) {
+        return [0.0; 3];
+    }
+    integrate(&GAUSS_5, &pieces, |x| {
+        let l = light.eval(x);
+        [cmf[0].eval(x) * l, cmf[1].eval(x) * l, cmf[2].eval(x) * l]
+    })
+}
+
 /// The exact `∫ L·clamp(p)·c̄` over segment `[knot, next]` ∩ `range`, where
 /// `p` is the reflectance's polynomial `c` (in `t = λ − knot`), clamped to
 /// `bounds`: pieces between the breaks of the light, the observer and the

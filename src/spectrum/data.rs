@@ -18,6 +18,8 @@
 //! ```
 
 use crate::TabulatedSpectrum;
+use crate::sampling::light_pdf::PiecewisePdf;
+use crate::sampling::pdf::Weighting;
 use crate::sampling::weights::Weights;
 
 mod generated {
@@ -28,14 +30,28 @@ mod generated {
 /// or a clone of one (its tables are the static ones), for reflectances on
 /// the patches' 10 nm grid. Computed by `build.rs`.
 pub(crate) fn builtin_weights(light: &TabulatedSpectrum) -> Option<&'static Weights> {
+    let weights = [&generated::A_WEIGHTS, &generated::D65_WEIGHTS, &generated::F11_WEIGHTS];
+    builtin_light(light).map(|i| weights[i])
+}
+
+/// The compiled-in wavelength pdf of `light` (see `builtin_weights`).
+pub(crate) fn builtin_pdf(light: &TabulatedSpectrum, weighting: Weighting) -> Option<&'static PiecewisePdf> {
+    let pdfs = match weighting {
+        Weighting::Light => [&generated::A_PDF_LIGHT, &generated::D65_PDF_LIGHT, &generated::F11_PDF_LIGHT],
+        Weighting::Balanced => {
+            [&generated::A_PDF_BALANCED, &generated::D65_PDF_BALANCED, &generated::F11_PDF_BALANCED]
+        }
+    };
+    builtin_light(light).map(|i| pdfs[i])
+}
+
+/// Which built-in light `light` is (by its static tables), if any.
+fn builtin_light(light: &TabulatedSpectrum) -> Option<usize> {
     let same = |s: &TabulatedSpectrum| {
         let (a, b) = (s.values(), light.values());
         std::ptr::eq(a, b) && std::ptr::eq(s.lambda(), light.lambda()) && s.role() == light.role()
     };
-    [(&A, &generated::A_WEIGHTS), (&D65, &generated::D65_WEIGHTS), (&F11, &generated::F11_WEIGHTS)]
-        .into_iter()
-        .find(|(s, _)| same(s))
-        .map(|(_, w)| w)
+    [&A, &D65, &F11].into_iter().position(same)
 }
 
 pub use generated::{A, A1, CIE_X, CIE_Y, CIE_Z, D65, E2, F4, F11, G4, H4, J4};

@@ -17,9 +17,11 @@
 
 use std::num::NonZeroUsize;
 
+use crate::sampling::reference;
 use crate::study::method::{HERO_K, Method};
 use crate::study::perceptual;
 use crate::study::remarks::Viewing;
+use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
 use crate::study::trials;
 use crate::{Error, LinearSrgb};
@@ -33,6 +35,8 @@ pub struct Settings {
     pub m: NonZeroUsize,
     /// Hero width.
     pub k: usize,
+    /// The random and hero methods' pdf and strata.
+    pub sampling: Sampling,
     /// Seed of the single estimates, and base seed of the trials.
     pub seed: u64,
     /// Trials for the RMS ΔE00.
@@ -45,7 +49,8 @@ impl Default for Settings {
     /// n = 100, M = 16, K = 4, seed 1, 200 trials, as Appendix 2.
     fn default() -> Self {
         let nz = |n| NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
-        Settings { n: nz(100), m: nz(16), k: HERO_K, seed: 1, trials: nz(200), viewing: Viewing::default() }
+        let (k, sampling, viewing) = (HERO_K, Sampling::DEFAULT, Viewing::default());
+        Settings { n: nz(100), m: nz(16), k, sampling, seed: 1, trials: nz(200), viewing }
     }
 }
 
@@ -69,20 +74,21 @@ pub fn compare(light: &Named, surface: &Named, s: &Settings) -> Result<Vec<Line>
     let (l, r) = (&light.spectrum, &surface.spectrum);
     let techniques = [
         (Method::Reference, s.n, "reference".to_string()),
-        (Method::Random, s.n, format!("random n={}", s.n)),
-        (Method::Hero { k: s.k }, s.n, format!("hero n={} K={}", s.n, s.k)),
+        (Method::Random { sampling: s.sampling }, s.n, format!("random n={}", s.n)),
+        (Method::Hero { k: s.k, sampling: s.sampling }, s.n, format!("hero n={} K={}", s.n, s.k)),
         (Method::RegularCentre, s.m, format!("centre M={}", s.m)),
         (Method::RegularBox, s.m, format!("box M={}", s.m)),
     ];
-    let estimate = |method: Method, count, seed| method.xyz(l, r, count, seed).map(|x| s.viewing.adapt(x, l));
     let white = s.viewing.white(l);
-    let exact = estimate(Method::Reference, s.n, 0)?;
+    let exact = s.viewing.adapt(reference::xyz(l, r), l);
     techniques
         .into_iter()
         .map(|(method, count, label)| {
-            let xyz = estimate(method, count, s.seed)?;
+            let prepared = method.prepare(l)?;
+            let estimate = |seed| prepared.xyz(r, count, seed).map(|x| s.viewing.adapt(x, l));
+            let xyz = estimate(s.seed)?;
             let t = if method.is_random() { s.trials } else { NonZeroUsize::MIN };
-            let stats = trials::run(exact, white, t, s.seed, |seed| estimate(method, count, seed))?;
+            let stats = trials::run(exact, white, t, s.seed, estimate)?;
             let de00 = perceptual::delta_e00(xyz, exact, white);
             let evals = method.evaluations(count);
             Ok(Line { label, evals, rgb: xyz.to_linear_srgb(), de00, rms_de00: stats.rms_de00 })

@@ -1,20 +1,20 @@
 //! Accuracy in sequence: every method at increasing sample counts, each
 //! over many trials, and where each crosses an error threshold.
 //!
-//! Random and hero use n = 1, 2, 4, … 4096 (powers of two); regular buckets
-//! every M from 1 to 64. [`crossing`] reads, per light and method, the
+//! Random and hero use n = 1, 2, 4, … 4096 (powers of two), once for each
+//! pdf × strata asked for; regular buckets every M from 1 to 64. [`crossing`] reads, per light and method, the
 //! worst RMS ΔE00 over the light's surfaces at each count, and reports the
 //! first count below a threshold and the count from which it stays below.
 //!
 //! ```
 //! use std::num::NonZeroUsize;
 //! use speclab::study::convergence::{self, counts};
-//! use speclab::study::{method::Method, scene::Choice};
+//! use speclab::study::{method::Method, sampling::Sampling, scene::Choice};
 //! use speclab::Role;
 //! let light = Choice::Name("D65".into()).resolve(Role::Light)?;
 //! let patch = Choice::Name("A1".into()).resolve(Role::Reflectance)?;
-//! let rows = convergence::sequence(&light, &patch, NonZeroUsize::new(20).unwrap(), 1)?;
-//! assert_eq!(rows.len(), 2 * counts(Method::Random).len() + 2 * counts(Method::RegularBox).len());
+//! let rows = convergence::sequence(&light, &patch, &[Sampling::DEFAULT], NonZeroUsize::new(20).unwrap(), 1)?;
+//! assert_eq!(rows.len(), 2 * counts(Method::RANDOM).len() + 2 * counts(Method::RegularBox).len());
 //! let boxed = convergence::crossing(&rows, "D65", Method::RegularBox, 1.0);
 //! assert!(boxed.first.is_some() && boxed.stable >= boxed.first);
 //! # Ok::<(), speclab::Error>(())
@@ -25,12 +25,21 @@ use std::num::NonZeroUsize;
 use crate::Error;
 use crate::sampling::regular::MAX_BUCKETS;
 use crate::study::method::Method;
+use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
 use crate::study::threshold::{self, Crossing};
 use crate::study::trials::{self, Stats};
 
-/// The methods a sequence studies, in order.
-pub const METHODS: [Method; 4] = [Method::Random, Method::HERO, Method::RegularCentre, Method::RegularBox];
+/// The methods a sequence studies with `samplings`, in order: random and
+/// hero with each sampling, then centre and box buckets.
+#[must_use]
+pub fn methods(samplings: &[Sampling]) -> Vec<Method> {
+    let random = [Method::RANDOM, Method::HERO];
+    let mut out: Vec<Method> =
+        random.iter().flat_map(|m| samplings.iter().map(|&s| m.with_sampling(s))).collect();
+    out.extend([Method::RegularCentre, Method::RegularBox]);
+    out
+}
 
 /// The largest n studied for random and hero: 2¹² = 4096.
 pub const MAX_N: usize = 1 << 12;
@@ -41,7 +50,7 @@ pub const MAX_N: usize = 1 << 12;
 #[must_use]
 pub fn counts(method: Method) -> Vec<usize> {
     match method {
-        Method::Random | Method::Hero { .. } => {
+        Method::Random { .. } | Method::Hero { .. } => {
             std::iter::successors(Some(1), |n| Some(n * 2)).take_while(|&n| n <= MAX_N).collect()
         }
         Method::RegularCentre | Method::RegularBox => (1..=MAX_BUCKETS).collect(),
@@ -64,11 +73,17 @@ pub struct Row {
     pub stats: Stats,
 }
 
-/// Every method of [`METHODS`] at every count of [`counts`], on
+/// Every method of [`methods`] at every count of [`counts`], on
 /// `light × surface`, with `trials` trials per random row.
-pub fn sequence(light: &Named, surface: &Named, trials: NonZeroUsize, seed: u64) -> Result<Vec<Row>, Error> {
+pub fn sequence(
+    light: &Named,
+    surface: &Named,
+    samplings: &[Sampling],
+    trials: NonZeroUsize,
+    seed: u64,
+) -> Result<Vec<Row>, Error> {
     let mut rows = Vec::new();
-    for method in METHODS {
+    for method in methods(samplings) {
         for samples in counts(method) {
             let n = NonZeroUsize::new(samples).unwrap_or(NonZeroUsize::MIN);
             let stats = trials::method(&light.spectrum, &surface.spectrum, method, n, trials, seed)?;

@@ -18,6 +18,7 @@
 use std::num::NonZeroUsize;
 
 use crate::study::method::{Method, derive_seed};
+use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
 use crate::{Error, Xyz};
 
@@ -30,15 +31,18 @@ pub struct Grid {
     pub m: NonZeroUsize,
     /// Base seed.
     pub seed: u64,
+    /// The random and hero methods' pdf and strata.
+    pub sampling: Sampling,
 }
 
 impl Default for Grid {
-    /// n = 100, M = 16, seed 1.
+    /// n = 100, M = 16, seed 1, uniform and independent wavelengths.
     fn default() -> Self {
         Grid {
             n: NonZeroUsize::new(100).unwrap_or(NonZeroUsize::MIN),
             m: NonZeroUsize::new(16).unwrap_or(NonZeroUsize::MIN),
             seed: 1,
+            sampling: Sampling::DEFAULT,
         }
     }
 }
@@ -59,19 +63,23 @@ pub struct Row<'a> {
 }
 
 impl Grid {
-    /// All rows: for each light, each surface, each method in [`Method::ALL`].
+    /// All rows: for each light, each surface, each method in
+    /// [`Method::ALL`] (random and hero drawing as [`Grid::sampling`] says).
     pub fn rows<'a>(&self, lights: &'a [Named], surfaces: &'a [Named]) -> Result<Vec<Row<'a>>, Error> {
         let mut rows = Vec::with_capacity(lights.len() * surfaces.len() * Method::ALL.len());
+        let methods = Method::ALL.map(|m| m.with_sampling(self.sampling));
         let mut cell = 0u64;
         for light in lights {
+            let prepared: Vec<_> =
+                methods.iter().map(|m| m.prepare(&light.spectrum)).collect::<Result<_, _>>()?;
             for surface in surfaces {
-                for method in Method::ALL {
+                for (&method, prepared) in methods.iter().zip(&prepared) {
                     let (samples, seed) = match method {
-                        Method::Random => (self.n, derive_seed(self.seed, 2 * cell)),
+                        Method::Random { .. } => (self.n, derive_seed(self.seed, 2 * cell)),
                         Method::Hero { .. } => (self.n, derive_seed(self.seed, 2 * cell + 1)),
                         _ => (self.m, 0),
                     };
-                    let xyz = method.xyz(&light.spectrum, &surface.spectrum, samples, seed)?;
+                    let xyz = prepared.xyz(&surface.spectrum, samples, seed)?;
                     let samples = method.reported_samples(samples);
                     rows.push(Row { light, surface, method, samples, xyz });
                 }

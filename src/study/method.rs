@@ -3,13 +3,15 @@
 //! | method | wavelengths | `samples` means |
 //! |---|---|---|
 //! | `reference` | exact integration | (ignored; reported as 0) |
-//! | `random` | n × 1 uniform wavelength | n |
+//! | `random` | n × 1 wavelength | n |
 //! | `hero` | n × K (hero + K − 1 rotations; K = 4 by default) | n |
 //! | `regular-centre` | M bucket centres | M |
 //! | `regular-box` | M bucket means | M |
 //!
-//! Random methods draw from `StdRng::seed_from_u64(seed)`, so a seed fixes
-//! the result. Use [`derive_seed`] to give independent runs their own seeds.
+//! Random and hero draw their wavelengths as their [`Sampling`] says (a pdf
+//! and a strata; uniform and independent by default, as the assignment).
+//! They draw from `StdRng::seed_from_u64(seed)`, so a seed fixes the
+//! result. Use [`derive_seed`] to give independent runs their own seeds.
 //!
 //! ```
 //! use std::num::NonZeroUsize;
@@ -29,6 +31,7 @@ use rand::rngs::StdRng;
 
 use crate::sampling::regular::{self, Rule};
 use crate::sampling::{hero, reference};
+use crate::study::sampling::{AnyPdf, Sampling};
 use crate::{Error, TabulatedSpectrum, Xyz};
 
 /// The usual hero width: four wavelengths per sample.
@@ -39,13 +42,18 @@ pub const HERO_K: usize = 4;
 pub enum Method {
     /// Exact integration of the interpolants.
     Reference,
-    /// n uniform wavelengths (`HeroSample<1>`).
-    Random,
+    /// n single wavelengths (`HeroSample<1>`).
+    Random {
+        /// Their pdf and strata.
+        sampling: Sampling,
+    },
     /// n hero samples of `k` wavelengths (`HeroSample<k>`, k in
     /// [`hero::WIDTHS`]).
     Hero {
         /// Wavelengths per sample.
         k: usize,
+        /// Their pdf and strata.
+        sampling: Sampling,
     },
     /// `RegularSpectrum<M, Centre>`.
     RegularCentre,
@@ -54,35 +62,59 @@ pub enum Method {
 }
 
 impl Method {
-    /// Hero sampling of the usual width, [`HERO_K`].
-    pub const HERO: Method = Method::Hero { k: HERO_K };
+    /// Random sampling as the assignment has it: uniform, independent.
+    pub const RANDOM: Method = Method::Random { sampling: Sampling::DEFAULT };
+
+    /// Hero sampling of the usual width, [`HERO_K`], uniform, independent.
+    pub const HERO: Method = Method::Hero { k: HERO_K, sampling: Sampling::DEFAULT };
 
     /// The assignment's five methods, reference first.
     pub const ALL: [Method; 5] =
-        [Method::Reference, Method::Random, Method::HERO, Method::RegularCentre, Method::RegularBox];
+        [Method::Reference, Method::RANDOM, Method::HERO, Method::RegularCentre, Method::RegularBox];
 
-    /// The name used in tables and CSV (`hero` for any K).
+    /// The name used in tables and CSV (`hero` for any K; the sampling has
+    /// columns of its own).
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
             Method::Reference => "reference",
-            Method::Random => "random",
+            Method::Random { .. } => "random",
             Method::Hero { .. } => "hero",
             Method::RegularCentre => "regular-centre",
             Method::RegularBox => "regular-box",
         }
     }
 
-    /// The method with this name (`hero` is [`Method::HERO`]).
+    /// The method with this name, sampling uniform and independent.
     #[must_use]
     pub fn from_name(name: &str) -> Option<Method> {
         Method::ALL.into_iter().find(|m| m.name() == name)
     }
 
+    /// The same method drawing wavelengths as `sampling` says (no change
+    /// for the deterministic methods).
+    #[must_use]
+    pub fn with_sampling(self, sampling: Sampling) -> Method {
+        match self {
+            Method::Random { .. } => Method::Random { sampling },
+            Method::Hero { k, .. } => Method::Hero { k, sampling },
+            other => other,
+        }
+    }
+
+    /// The sampling of a random method.
+    #[must_use]
+    pub fn sampling(self) -> Option<Sampling> {
+        match self {
+            Method::Random { sampling } | Method::Hero { sampling, .. } => Some(sampling),
+            _ => None,
+        }
+    }
+
     /// True for the methods whose result depends on the seed.
     #[must_use]
     pub fn is_random(self) -> bool {
-        matches!(self, Method::Random | Method::Hero { .. })
+        self.sampling().is_some()
     }
 
     /// The sample count reported for a run with `samples`: 0 for the reference.
@@ -96,14 +128,25 @@ impl Method {
     #[must_use]
     pub fn evaluations(self, samples: NonZeroUsize) -> usize {
         match self {
-            Method::Hero { k } => k.saturating_mul(samples.get()),
+            Method::Hero { k, .. } => k.saturating_mul(samples.get()),
             _ => self.reported_samples(samples),
         }
     }
 
+    /// This method ready for `light`: its pdf built once (see
+    /// [`Prepared::xyz`]).
+    pub fn prepare(self, light: &TabulatedSpectrum) -> Result<Prepared<'_>, Error> {
+        let pdf = match self.sampling() {
+            Some(s) => Some(s.pdf.build(light)?),
+            None => None,
+        };
+        Ok(Prepared { method: self, light, pdf })
+    }
+
     /// XYZ of `light × surface` by this method with `samples` samples or
     /// buckets. Errors for a hero width or bucket count that is not compiled
-    /// ([`hero::WIDTHS`], 1 to [`regular::MAX_BUCKETS`]).
+    /// ([`hero::WIDTHS`], 1 to [`regular::MAX_BUCKETS`]), and for a pdf that
+    /// cannot follow the light.
     pub fn xyz(
         self,
         light: &TabulatedSpectrum,
@@ -111,11 +154,33 @@ impl Method {
         samples: NonZeroUsize,
         seed: u64,
     ) -> Result<Xyz, Error> {
+        self.prepare(light)?.xyz(surface, samples, seed)
+    }
+}
+
+/// A method with its pdf built for one light.
+#[derive(Clone, Debug)]
+pub struct Prepared<'a> {
+    method: Method,
+    light: &'a TabulatedSpectrum,
+    pdf: Option<AnyPdf>,
+}
+
+impl Prepared<'_> {
+    /// XYZ of the light × `surface` with `samples` samples or buckets, the
+    /// random methods seeded with `seed`.
+    pub fn xyz(&self, surface: &TabulatedSpectrum, samples: NonZeroUsize, seed: u64) -> Result<Xyz, Error> {
+        let light = self.light;
         let mut rng = StdRng::seed_from_u64(seed);
-        match self {
+        let pdf = self.pdf.as_ref().unwrap_or(&AnyPdf::Uniform);
+        match self.method {
             Method::Reference => Ok(reference::xyz(light, surface)),
-            Method::Random => Ok(hero::estimate::<1, _>(light, surface, samples, &mut rng)),
-            Method::Hero { k } => hero::estimate_dyn(k, light, surface, samples, &mut rng),
+            Method::Random { sampling } => {
+                Ok(hero::estimate_with::<1, _>(light, surface, samples, pdf, sampling.strata, &mut rng))
+            }
+            Method::Hero { k, sampling } => {
+                hero::estimate_dyn(k, light, surface, samples, pdf, sampling.strata, &mut rng)
+            }
             Method::RegularCentre => regular::xyz_dyn(samples.get(), Rule::Centre, light, surface),
             Method::RegularBox => regular::xyz_dyn(samples.get(), Rule::BoxAverage, light, surface),
         }

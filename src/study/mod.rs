@@ -3,7 +3,8 @@
 //!
 //! - [`scene`]: lights and surfaces, built-in or from files, named.
 //! - [`method`]: the five methods (reference, random, hero, centre and box
-//!   buckets) behind one call.
+//!   buckets) behind one call; [`sampling`]: the random methods' pdf and
+//!   strata.
 //! - [`grid`]: every light × surface by every method (Appendix 2's layout).
 //! - [`trials`]: T independent estimates of a method: bias, spread, RMS and
 //!   95th-percentile ΔE00, gamut agreement (on all cores).
@@ -31,6 +32,7 @@ pub mod method;
 pub mod perceptual;
 pub mod remarks;
 pub mod report;
+pub mod sampling;
 pub mod scene;
 pub mod threshold;
 pub mod trials;

@@ -11,7 +11,7 @@
 //! let mut csv = Vec::new();
 //! report::grid_csv(&mut csv, &rows, &Viewing::default())?;
 //! let text = String::from_utf8(csv).unwrap();
-//! assert!(text.starts_with("light,surface,method,samples,x,y,z,r,g,b\nA,E2,reference,0,"));
+//! assert!(text.starts_with("light,surface,method,samples,x,y,z,r,g,b,pdf,strata,evals\nA,E2,reference,0,"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
@@ -19,24 +19,27 @@ use std::io::{self, Write};
 
 use crate::color::srgb;
 use crate::study::compare::{Line, Settings};
-use crate::study::convergence::{self, METHODS};
+use crate::study::convergence;
 use crate::study::grid::{Grid, Row};
 use crate::study::method::Method;
 use crate::study::perceptual;
 use crate::study::remarks::Viewing;
 use crate::{LinearSrgb, Xyz};
 
-/// Grid rows as CSV: `light,surface,method,samples,x,y,z,r,g,b`, full f64
-/// precision, colours white-balanced if `viewing` asks.
+/// Grid rows as CSV: `light,surface,method,samples,x,y,z,r,g,b`, then
+/// `pdf,strata,evals`; full f64 precision, colours white-balanced if
+/// `viewing` asks.
 pub fn grid_csv(out: &mut impl Write, rows: &[Row], viewing: &Viewing) -> io::Result<()> {
-    writeln!(out, "light,surface,method,samples,x,y,z,r,g,b")?;
+    writeln!(out, "light,surface,method,samples,x,y,z,r,g,b,pdf,strata,evals")?;
     for row in rows {
         let xyz = viewing.adapt(row.xyz, &row.light.spectrum);
         let [r, g, b] = xyz.to_linear_srgb().to_array();
         let (light, surface, method) = (&row.light.name, &row.surface.name, row.method.name());
+        let (pdf, strata) = sampling_columns(row.method);
+        let evals = std::num::NonZeroUsize::new(row.samples).map_or(0, |n| row.method.evaluations(n));
         writeln!(
             out,
-            "{light},{surface},{method},{},{},{},{},{r},{g},{b}",
+            "{light},{surface},{method},{},{},{},{},{r},{g},{b},{pdf},{strata},{evals}",
             row.samples, xyz.x, xyz.y, xyz.z
         )?;
     }
@@ -53,11 +56,13 @@ pub fn grid_table(
     colour: bool,
 ) -> io::Result<()> {
     writeln!(out, "speclab grid: linear sRGB (unclamped) of light × patch, by method")?;
-    let (n, m, seed) = (grid.n, grid.m, grid.seed);
+    let (n, m, seed, sampling) = (grid.n, grid.m, grid.seed, grid.sampling);
     writeln!(
         out,
         "random: n = {n} wavelengths; hero: n = {n} samples × 4 wavelengths; regular: M = {m} buckets; seed {seed}"
     )?;
+    let (pdf, strata) = (sampling.pdf.name(), sampling.strata.name());
+    writeln!(out, "random and hero wavelengths: pdf {pdf}, strata {strata}")?;
     let balance = if viewing.white_balance { "Bradford to D65" } else { "off" };
     writeln!(out, "normalise: {}; white balance: {balance}", viewing.normalize.name())?;
     writeln!(
@@ -133,21 +138,29 @@ fn evals(r: &convergence::Row) -> usize {
     r.method.evaluations(std::num::NonZeroUsize::new(r.samples).unwrap_or(std::num::NonZeroUsize::MIN))
 }
 
-/// Convergence rows as CSV, one per method and count.
+/// A random method's pdf and strata for tables and CSV, `-` for others.
+fn sampling_columns(method: Method) -> (&'static str, &'static str) {
+    method.sampling().map_or(("-", "-"), |s| (s.pdf.name(), s.strata.name()))
+}
+
+/// Convergence rows as CSV, one per method, sampling and count. The first
+/// thirteen columns are those of earlier versions; `pdf`, `strata` and
+/// `evals` follow.
 pub fn converge_csv(out: &mut impl Write, rows: &[convergence::Row]) -> io::Result<()> {
     writeln!(
         out,
-        "light,surface,method,samples,trials,bias_x,bias_y,bias_z,sd_x,sd_y,sd_z,rms_de00,p95_de00"
+        "light,surface,method,samples,trials,bias_x,bias_y,bias_z,sd_x,sd_y,sd_z,rms_de00,p95_de00,pdf,strata,evals"
     )?;
     for r in rows {
         let numbers: Vec<String> = numbers(r).iter().map(f64::to_string).collect();
         let head = format!("{},{},{},{},{}", r.light, r.surface, r.method.name(), r.samples, r.stats.trials);
-        writeln!(out, "{head},{}", numbers.join(","))?;
+        let (pdf, strata) = sampling_columns(r.method);
+        writeln!(out, "{head},{},{pdf},{strata},{}", numbers.join(","), evals(r))?;
     }
     Ok(())
 }
 
-/// Convergence rows as a table per light × surface × method.
+/// Convergence rows as a table per light × surface × method (and sampling).
 pub fn converge_table(
     out: &mut impl Write,
     rows: &[convergence::Row],
@@ -162,7 +175,8 @@ pub fn converge_table(
     let heads = ["bias X", "bias Y", "bias Z", "sd X", "sd Y", "sd Z", "rms ΔE", "p95 ΔE"];
     for run in rows.chunk_by(|a, b| (&a.light, &a.surface, a.method) == (&b.light, &b.surface, b.method)) {
         let r = &run[0];
-        writeln!(out, "\n{} × {}: {}", r.light, r.surface, r.method.name())?;
+        let sampling = r.method.sampling().map_or(String::new(), |s| format!(" ({s})"));
+        writeln!(out, "\n{} × {}: {}{sampling}", r.light, r.surface, r.method.name())?;
         let heads: String = heads.iter().map(|h| format!(" {h:>10}")).collect();
         writeln!(out, "{:>7} {:>7}{heads}", "samples", "evals")?;
         for r in run {
@@ -173,56 +187,57 @@ pub fn converge_table(
     Ok(())
 }
 
-/// Per light, threshold and method: the first count with RMS ΔE00 below
-/// the threshold for every surface, and the count from which it stays
-/// below (a Markdown table).
+/// One row per method (with its pdf and strata), one column per light and
+/// threshold (1, then 0.5): the first count with RMS ΔE00 below the
+/// threshold for every surface, and the count from which it stays below
+/// when that differs (a Markdown table).
 pub fn converge_summary(
     out: &mut impl Write,
     rows: &[convergence::Row],
     trials: usize,
     seed: u64,
 ) -> io::Result<()> {
-    writeln!(
-        out,
-        "Smallest n (random, hero) and M (regular) with RMS ΔE00 below the threshold for every patch:"
-    )?;
-    writeln!(
-        out,
-        "first / stays below from (n over powers of two up to {}, M up to 64;",
-        convergence::MAX_N
-    )?;
-    writeln!(out, "{trials} trials per random row, base seed {seed}; evals = wavelength evaluations)\n")?;
-    writeln!(out, "| light | threshold | random n (evals) | hero n (evals) | centre M | box M |")?;
-    writeln!(out, "|---|---|---|---|---|---|")?;
-    let mut lights: Vec<&str> = rows.iter().map(|r| r.light.as_str()).collect();
-    lights.dedup();
-    for light in lights {
-        for threshold in [1.0, 0.5] {
-            let cells: Vec<String> = METHODS
-                .iter()
-                .map(|&method| {
-                    let c = convergence::crossing(rows, light, method, threshold);
-                    let show = |n: Option<usize>| match n {
-                        Some(n) if method.is_random() => {
-                            let evals = method.evaluations(
-                                std::num::NonZeroUsize::new(n).unwrap_or(std::num::NonZeroUsize::MIN),
-                            );
-                            format!("{n} ({evals})")
-                        }
-                        Some(n) => n.to_string(),
-                        None => "not reached".into(),
-                    };
-                    if c.first == c.stable {
-                        show(c.first)
-                    } else {
-                        format!("{} / {}", show(c.first), show(c.stable))
-                    }
-                })
-                .collect();
-            writeln!(out, "| {light} | {threshold} | {} |", cells.join(" | "))?;
+    let mut lights: Vec<&str> = Vec::new();
+    let mut methods: Vec<Method> = Vec::new();
+    for r in rows {
+        if !lights.contains(&r.light.as_str()) {
+            lights.push(&r.light);
+        }
+        if !methods.contains(&r.method) {
+            methods.push(r.method);
         }
     }
-    Ok(())
+    writeln!(
+        out,
+        "Smallest n (random, hero: n samples of 1 or 4 wavelengths) and M (buckets) with RMS ΔE00"
+    )?;
+    writeln!(out, "below 1 and below 0.5 for every patch; `first / stays below from` where they differ;")?;
+    writeln!(
+        out,
+        "n over powers of two up to {}, M up to 64; {trials} trials per random row, seed {seed}.\n",
+        convergence::MAX_N
+    )?;
+    let heads: Vec<String> =
+        [1.0, 0.5].iter().flat_map(|t| lights.iter().map(move |l| format!("{l} < {t}"))).collect();
+    writeln!(out, "| method | pdf | strata | {} |", heads.join(" | "))?;
+    writeln!(out, "|---|---|---|{}", "---|".repeat(heads.len()))?;
+    for method in methods {
+        let cells: Vec<String> = [1.0, 0.5]
+            .iter()
+            .flat_map(|&t| lights.iter().map(move |l| convergence::crossing(rows, l, method, t)))
+            .map(|c| {
+                let show = |n: Option<usize>| n.map_or_else(|| "–".to_string(), |n| n.to_string());
+                if c.first == c.stable {
+                    show(c.first)
+                } else {
+                    format!("{} / {}", show(c.first), show(c.stable))
+                }
+            })
+            .collect();
+        let (pdf, strata) = sampling_columns(method);
+        writeln!(out, "| {} | {pdf} | {strata} | {} |", method.name(), cells.join(" | "))?;
+    }
+    writeln!(out, "\n– : not reached within the counts studied.")
 }
 
 /// The lines of [`crate::study::compare::compare`] as a table.
@@ -240,6 +255,7 @@ pub fn compare_table(
         "{light} × {surface}; normalise: {normalize}; white balance: {balance}; seed {}; RMS over {} trials",
         s.seed, s.trials
     )?;
+    writeln!(out, "random and hero wavelengths: {}", s.sampling)?;
     let h = ["technique", "evals", "R", "G", "B", "gamut", "ΔE00", "RMS ΔE00"];
     writeln!(
         out,

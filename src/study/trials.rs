@@ -15,7 +15,7 @@
 //! let n = NonZeroUsize::new(64).unwrap();
 //! let t = NonZeroUsize::new(200).unwrap();
 //! let hero = trials::method(&data::D65, &data::F4, Method::HERO, n, t, 1)?;
-//! let random = trials::method(&data::D65, &data::F4, Method::Random, n, t, 1)?;
+//! let random = trials::method(&data::D65, &data::F4, Method::RANDOM, n, t, 1)?;
 //! assert!(hero.rms_de00 < random.rms_de00);
 //! # Ok::<(), speclab::Error>(())
 //! ```
@@ -58,7 +58,8 @@ pub fn method(
     let trials = if method.is_random() { trials } else { NonZeroUsize::MIN };
     let reference = reference::xyz(light, surface);
     let white = reference::white(light);
-    run(reference, white, trials, base_seed, |seed| method.xyz(light, surface, samples, seed))
+    let prepared = method.prepare(light)?;
+    run(reference, white, trials, base_seed, |seed| prepared.xyz(surface, samples, seed))
 }
 
 /// Runs `estimate(seed)` for `trials` seeds derived from `base_seed` and

@@ -1,0 +1,217 @@
+//! A wavelength pdf that follows a light: `p(λ) ∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)` over
+//! 380–730 nm, tabulated exactly.
+//!
+//! Between consecutive breaks of the light and of the matching functions
+//! every factor is one polynomial (a clamped segment contributes its bound),
+//! so the density is one polynomial per piece, of degree at most 6. Its
+//! coefficients are exact products of the segments' polynomials, its
+//! integral per piece is exact, and the CDF at the piece ends is their
+//! running sum. Sampling finds the piece by binary search on the CDF and
+//! inverts the piece's integral, a polynomial of degree at most 7, by
+//! Newton's method safeguarded by bisection: no allocation, and the CDF of
+//! the returned wavelength equals `u` to within 1e-12.
+//!
+//! This file depends on `std` only: `build.rs` includes it to tabulate the
+//! built-in lights' pdfs at compile time.
+
+use std::borrow::Cow;
+
+use crate::sampling::weights::View;
+use crate::spectrum::interp::{self, Coeffs};
+use crate::spectrum::range::{LAMBDA_MAX, LAMBDA_MIN};
+
+/// Coefficients of the density on one piece, in `t = λ − start`.
+pub(crate) type Poly = [f64; 7];
+
+/// The tabulated density: piece ends, one polynomial per piece, the
+/// unnormalised CDF at the ends, and the total.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PiecewisePdf {
+    ends: Cow<'static, [f64]>,
+    polys: Cow<'static, [Poly]>,
+    cdf: Cow<'static, [f64]>,
+}
+
+impl PiecewisePdf {
+    /// Over static tables, for generated code: they must be the ones
+    /// [`PiecewisePdf::new`] computes.
+    pub(crate) const fn from_static(
+        ends: &'static [f64],
+        polys: &'static [Poly],
+        cdf: &'static [f64],
+    ) -> Self {
+        PiecewisePdf { ends: Cow::Borrowed(ends), polys: Cow::Borrowed(polys), cdf: Cow::Borrowed(cdf) }
+    }
+
+    /// The density ∝ `light·Σ alpha꜀·cmf꜀`, or `None` if it integrates to
+    /// zero (or to something not finite) over 380–730 nm.
+    pub(crate) fn new(light: &View, cmf: &[View; 3], alpha: [f64; 3]) -> Option<Self> {
+        let (a, b) = (LAMBDA_MIN.max(light.lambda[0]), LAMBDA_MAX.min(light.lambda[light.lambda.len() - 1]));
+        if a >= b {
+            return None;
+        }
+        let mut ends: Vec<f64> = [light, &cmf[0], &cmf[1], &cmf[2]]
+            .iter()
+            .flat_map(|v| v.breaks.iter().copied())
+            .filter(|&x| x > a && x < b)
+            .chain([a, b])
+            .collect();
+        ends.sort_by(f64::total_cmp);
+        ends.dedup();
+        let polys: Vec<Poly> = ends
+            .windows(2)
+            .map(|w| {
+                let l = piece_poly(light, w[0], w[1]);
+                let c = (0..3).fold([0.0; 4], |acc, i| {
+                    let p = piece_poly(&cmf[i], w[0], w[1]);
+                    std::array::from_fn(|j| acc[j] + alpha[i] * p[j])
+                });
+                product(l, c)
+            })
+            .collect();
+        let mut cdf = Vec::with_capacity(ends.len());
+        cdf.push(0.0);
+        for (p, w) in polys.iter().zip(ends.windows(2)) {
+            cdf.push(cdf[cdf.len() - 1] + primitive(p, w[1] - w[0]));
+        }
+        let total = cdf[cdf.len() - 1];
+        let bright = total.is_finite() && total > 0.0;
+        bright.then_some(PiecewisePdf {
+            ends: Cow::Owned(ends),
+            polys: Cow::Owned(polys),
+            cdf: Cow::Owned(cdf),
+        })
+    }
+
+    fn total(&self) -> f64 {
+        self.cdf[self.cdf.len() - 1]
+    }
+
+    /// The piece containing `lambda`, if inside the support.
+    fn piece(&self, lambda: f64) -> Option<usize> {
+        let (first, last) = (self.ends[0], self.ends[self.ends.len() - 1]);
+        if !(lambda >= first && lambda <= last) {
+            return None;
+        }
+        Some(self.ends.partition_point(|&x| x <= lambda).saturating_sub(1).min(self.polys.len() - 1))
+    }
+
+    /// The density at `lambda`, 1/nm; zero outside 380–730 nm ∩ the light.
+    pub(crate) fn pdf(&self, lambda: f64) -> f64 {
+        self.piece(lambda)
+            .map_or(0.0, |k| (value(&self.polys[k], lambda - self.ends[k]) / self.total()).max(0.0))
+    }
+
+    /// The CDF at `lambda`.
+    pub(crate) fn cdf(&self, lambda: f64) -> f64 {
+        match self.piece(lambda) {
+            Some(k) => (self.cdf[k] + primitive(&self.polys[k], lambda - self.ends[k])) / self.total(),
+            None if lambda >= self.ends[self.ends.len() - 1] => 1.0,
+            None => 0.0,
+        }
+    }
+
+    /// The wavelength whose CDF is `u` (clamped into `[0, 1)`; NaN acts as 0),
+    /// never one where the density is zero on a whole piece.
+    pub(crate) fn sample(&self, u: f64) -> f64 {
+        let u = if u > 0.0 { u.min(1.0 - f64::EPSILON / 2.0) } else { 0.0 };
+        let target = u * self.total();
+        // The first piece whose CDF at its end exceeds the target has mass.
+        let k = self.cdf[1..].partition_point(|&c| c <= target).min(self.polys.len() - 1);
+        let (p, h) = (&self.polys[k], self.ends[k + 1] - self.ends[k]);
+        let rest = target - self.cdf[k];
+        self.ends[k] + invert(p, rest, h, self.cdf[k + 1] - self.cdf[k])
+    }
+
+    /// The Rust source of `static {name}: PiecewisePdf`, for build scripts.
+    #[allow(dead_code)] // used by speclab's build.rs, which includes this file
+    pub(crate) fn to_source(&self, name: &str, crate_path: &str) -> String {
+        let (e, p, c) = (&self.ends, &self.polys, &self.cdf);
+        format!(
+            "pub const {name}_ENDS: [f64; {}] = {e:?};\n\
+             pub const {name}_POLYS: [[f64; 7]; {}] = {p:?};\n\
+             pub const {name}_CDF: [f64; {}] = {c:?};\n\
+             pub(crate) static {name}: {crate_path}::sampling::light_pdf::PiecewisePdf =\n    \
+             {crate_path}::sampling::light_pdf::PiecewisePdf::from_static(&{name}_ENDS, &{name}_POLYS, &{name}_CDF);\n",
+            e.len(),
+            p.len(),
+            c.len()
+        )
+    }
+}
+
+/// The polynomial of `v` on `[a, b]` (inside one of its segments) in
+/// `t = λ − a`, with the clamp applied: a piece below or above the bounds is
+/// the bound.
+fn piece_poly(v: &View, a: f64, b: f64) -> Coeffs {
+    let n = v.lambda.len();
+    let mid = 0.5 * (a + b);
+    if !(mid >= v.lambda[0] && mid <= v.lambda[n - 1]) {
+        return [0.0; 4];
+    }
+    let k = interp::segment_of(v.lambda, mid).min(v.coeffs.len() - 1);
+    let raw = interp::segment_value(v.coeffs[k], mid - v.lambda[k]);
+    if raw < v.bounds[0] {
+        return [v.bounds[0], 0.0, 0.0, 0.0];
+    }
+    if raw > v.bounds[1] {
+        return [v.bounds[1], 0.0, 0.0, 0.0];
+    }
+    shift(v.coeffs[k], a - v.lambda[k])
+}
+
+/// `p(t + d)` as a polynomial in `t` (a Taylor shift of a cubic).
+fn shift(c: Coeffs, d: f64) -> Coeffs {
+    [
+        c[0] + d * (c[1] + d * (c[2] + d * c[3])),
+        c[1] + d * (2.0 * c[2] + 3.0 * d * c[3]),
+        c[2] + 3.0 * d * c[3],
+        c[3],
+    ]
+}
+
+/// The product of two cubics.
+fn product(a: Coeffs, b: Coeffs) -> Poly {
+    let mut out = [0.0; 7];
+    for (i, ai) in a.iter().enumerate() {
+        for (j, bj) in b.iter().enumerate() {
+            out[i + j] += ai * bj;
+        }
+    }
+    out
+}
+
+/// `p(t)` by Horner's rule.
+fn value(p: &Poly, t: f64) -> f64 {
+    p.iter().rev().fold(0.0, |acc, c| acc * t + c)
+}
+
+/// `∫₀ᵗ p`.
+fn primitive(p: &Poly, t: f64) -> f64 {
+    t * p.iter().enumerate().rev().fold(0.0, |acc, (i, c)| acc * t + c / (i + 1) as f64)
+}
+
+/// The `t` in `[0, h]` with `∫₀ᵗ p = rest`, for `p ≥ 0` of integral `mass`
+/// over the piece: Newton's method, kept inside a shrinking bracket.
+fn invert(p: &Poly, rest: f64, h: f64, mass: f64) -> f64 {
+    let (mut lo, mut hi) = (0.0, h);
+    let mut t = if mass > 0.0 { (h * rest / mass).clamp(0.0, h) } else { 0.0 };
+    for _ in 0..100 {
+        let g = primitive(p, t) - rest;
+        if g.abs() <= 1e-14 * mass.max(f64::MIN_POSITIVE) {
+            break;
+        }
+        if g > 0.0 {
+            hi = t
+        } else {
+            lo = t
+        }
+        let slope = value(p, t);
+        let newton = t - g / slope;
+        t = if slope > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        if hi - lo <= 1e-15 * h {
+            break;
+        }
+    }
+    t
+}
