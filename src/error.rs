@@ -75,6 +75,13 @@ pub enum Error {
         /// The names that exist.
         expected: &'static str,
     },
+    /// A scene with no light or no surface.
+    EmptyScene,
+    /// A ΔE00 budget that is not finite and positive.
+    Budget {
+        /// The budget given.
+        value: f64,
+    },
     /// A light with no power where the observer sees, within 380–730 nm: no
     /// wavelength pdf can follow it.
     DarkLight,
@@ -108,6 +115,8 @@ impl fmt::Display for Error {
             }
             Error::UnknownSpectrum { name, expected } => write!(f, "expected {expected}, found {name:?}"),
             Error::Identifier { name } => write!(f, "expected a Rust identifier, found {name:?}"),
+            Error::EmptyScene => write!(f, "expected a scene of at least one light and one surface, found none"),
+            Error::Budget { value } => write!(f, "expected a finite positive ΔE00 budget, found {value}"),
             Error::DarkLight => {
                 write!(f, "expected a light with power where the observer sees (380-730 nm), found none")
             }

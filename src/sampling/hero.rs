@@ -106,8 +106,7 @@ impl<const K: usize> HeroSample<K> {
         let (mut lambda, mut inv_pdf) = ([0.0; K], [0.0; K]);
         for (j, (l, w)) in lambda.iter_mut().zip(&mut inv_pdf).enumerate() {
             let v = u + j as f64 / K as f64;
-            *l = pdf.sample(if v >= 1.0 { v - 1.0 } else { v });
-            *w = pdf.inv_pdf(*l);
+            (*l, *w) = pdf.sample_with_inv_pdf(if v >= 1.0 { v - 1.0 } else { v });
         }
         HeroSample { lambda, inv_pdf }
     }

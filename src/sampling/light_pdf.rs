@@ -30,6 +30,9 @@ pub(crate) struct PiecewisePdf {
     ends: Cow<'static, [f64]>,
     polys: Cow<'static, [Poly]>,
     cdf: Cow<'static, [f64]>,
+    /// `guide[i]`: the first piece whose CDF at its end exceeds
+    /// `i/len·total`. Sampling starts there and steps forward: O(1).
+    guide: Cow<'static, [u32]>,
 }
 
 impl PiecewisePdf {
@@ -39,8 +42,14 @@ impl PiecewisePdf {
         ends: &'static [f64],
         polys: &'static [Poly],
         cdf: &'static [f64],
+        guide: &'static [u32],
     ) -> Self {
-        PiecewisePdf { ends: Cow::Borrowed(ends), polys: Cow::Borrowed(polys), cdf: Cow::Borrowed(cdf) }
+        PiecewisePdf {
+            ends: Cow::Borrowed(ends),
+            polys: Cow::Borrowed(polys),
+            cdf: Cow::Borrowed(cdf),
+            guide: Cow::Borrowed(guide),
+        }
     }
 
     /// The density ∝ `light·Σ alpha꜀·cmf꜀`, or `None` if it integrates to
@@ -76,11 +85,9 @@ impl PiecewisePdf {
         }
         let total = cdf[cdf.len() - 1];
         let bright = total.is_finite() && total > 0.0;
-        bright.then_some(PiecewisePdf {
-            ends: Cow::Owned(ends),
-            polys: Cow::Owned(polys),
-            cdf: Cow::Owned(cdf),
-        })
+        let guide = guide(&cdf, 2 * polys.len());
+        let (ends, polys, cdf, guide) = (Cow::Owned(ends), Cow::Owned(polys), Cow::Owned(cdf), Cow::Owned(guide));
+        bright.then_some(PiecewisePdf { ends, polys, cdf, guide })
     }
 
     fn total(&self) -> f64 {
@@ -114,30 +121,57 @@ impl PiecewisePdf {
     /// The wavelength whose CDF is `u` (clamped into `[0, 1)`; NaN acts as 0),
     /// never one where the density is zero on a whole piece.
     pub(crate) fn sample(&self, u: f64) -> f64 {
+        self.sample_with_pdf(u).0
+    }
+
+    /// [`PiecewisePdf::sample`] and the density there, from the same piece.
+    pub(crate) fn sample_with_pdf(&self, u: f64) -> (f64, f64) {
         let u = if u > 0.0 { u.min(1.0 - f64::EPSILON / 2.0) } else { 0.0 };
-        let target = u * self.total();
-        // The first piece whose CDF at its end exceeds the target has mass.
-        let k = self.cdf[1..].partition_point(|&c| c <= target).min(self.polys.len() - 1);
+        let total = self.total();
+        let target = u * total;
+        // The first piece whose CDF at its end exceeds the target has mass:
+        // start where the guide points and step forward.
+        let last = self.polys.len() - 1;
+        let slot = ((u * self.guide.len() as f64) as usize).min(self.guide.len() - 1);
+        let mut k = (self.guide[slot] as usize).min(last);
+        while k < last && self.cdf[k + 1] <= target {
+            k += 1;
+        }
         let (p, h) = (&self.polys[k], self.ends[k + 1] - self.ends[k]);
-        let rest = target - self.cdf[k];
-        self.ends[k] + invert(p, rest, h, self.cdf[k + 1] - self.cdf[k])
+        let t = invert(p, target - self.cdf[k], h, self.cdf[k + 1] - self.cdf[k]);
+        (self.ends[k] + t, (value(p, t) / total).max(0.0))
     }
 
     /// The Rust source of `static {name}: PiecewisePdf`, for build scripts.
     #[allow(dead_code)] // used by speclab's build.rs, which includes this file
     pub(crate) fn to_source(&self, name: &str, crate_path: &str) -> String {
-        let (e, p, c) = (&self.ends, &self.polys, &self.cdf);
+        let (e, p, c, g) = (&self.ends, &self.polys, &self.cdf, &self.guide);
         format!(
             "pub const {name}_ENDS: [f64; {}] = {e:?};\n\
              pub const {name}_POLYS: [[f64; 7]; {}] = {p:?};\n\
              pub const {name}_CDF: [f64; {}] = {c:?};\n\
+             pub const {name}_GUIDE: [u32; {}] = {g:?};\n\
              pub(crate) static {name}: {crate_path}::sampling::light_pdf::PiecewisePdf =\n    \
-             {crate_path}::sampling::light_pdf::PiecewisePdf::from_static(&{name}_ENDS, &{name}_POLYS, &{name}_CDF);\n",
+             {crate_path}::sampling::light_pdf::PiecewisePdf::from_static(\n        \
+             &{name}_ENDS, &{name}_POLYS, &{name}_CDF, &{name}_GUIDE);\n",
             e.len(),
             p.len(),
-            c.len()
+            c.len(),
+            g.len()
         )
     }
+}
+
+/// For `slots` equal slices of `[0, 1)`, the first piece whose CDF at its
+/// end exceeds the slice's start.
+fn guide(cdf: &[f64], slots: usize) -> Vec<u32> {
+    let total = cdf[cdf.len() - 1];
+    (0..slots.max(1))
+        .map(|i| {
+            let target = i as f64 / slots.max(1) as f64 * total;
+            cdf[1..].partition_point(|&c| c <= target).min(cdf.len() - 2) as u32
+        })
+        .collect()
 }
 
 /// The polynomial of `v` on `[a, b]` (inside one of its segments) in

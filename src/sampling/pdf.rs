@@ -51,10 +51,22 @@ pub trait WavelengthPdf {
     /// `1/pdf(λ)`, nm, what an estimate multiplies by; 0 where the density
     /// is 0 (or so small that its reciprocal overflows).
     fn inv_pdf(&self, lambda: f64) -> f64 {
-        let p = self.pdf(lambda);
-        let w = 1.0 / p;
-        if p > 0.0 && w.is_finite() { w } else { 0.0 }
+        reciprocal(self.pdf(lambda))
     }
+
+    /// `sample(u)` and its `inv_pdf`, together (a tabulated pdf finds the
+    /// density where it found the wavelength).
+    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
+        let lambda = self.sample(u);
+        (lambda, self.inv_pdf(lambda))
+    }
+}
+
+/// `1/p`, or 0 where `p` is 0 or its reciprocal overflows.
+#[inline]
+fn reciprocal(p: f64) -> f64 {
+    let w = 1.0 / p;
+    if p > 0.0 && w.is_finite() { w } else { 0.0 }
 }
 
 /// Clamps `u` into `[0, 1)`; NaN becomes 0.
@@ -198,6 +210,12 @@ impl WavelengthPdf for LightPdf {
     fn cdf(&self, lambda: f64) -> f64 {
         self.table.cdf(lambda)
     }
+
+    #[inline]
+    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
+        let (lambda, pdf) = self.table.sample_with_pdf(u);
+        (lambda, reciprocal(pdf))
+    }
 }
 
 impl<P: WavelengthPdf + ?Sized> WavelengthPdf for &P {
@@ -215,5 +233,9 @@ impl<P: WavelengthPdf + ?Sized> WavelengthPdf for &P {
 
     fn cdf(&self, lambda: f64) -> f64 {
         (**self).cdf(lambda)
+    }
+
+    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
+        (**self).sample_with_inv_pdf(u)
     }
 }

@@ -262,15 +262,34 @@ pub fn xyz_dyn(
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
 ) -> Result<Xyz, Error> {
-    fn product<const M: usize, B: Bucketing<M>>(l: &TabulatedSpectrum, s: &TabulatedSpectrum) -> Xyz {
-        (RegularSpectrum::<M, B>::from_spectrum(l) * RegularSpectrum::<M, B>::from_spectrum(s)).to_xyz()
+    struct Product<'a>(&'a TabulatedSpectrum, &'a TabulatedSpectrum);
+    impl WithBuckets for Product<'_> {
+        type Output = Xyz;
+        fn run<const M: usize, B: Bucketing<M>>(self) -> Xyz {
+            (RegularSpectrum::<M, B>::from_spectrum(self.0) * RegularSpectrum::<M, B>::from_spectrum(self.1)).to_xyz()
+        }
     }
+    with_buckets(m, rule, Product(light, surface))
+}
+
+/// Work on `RegularSpectrum<M, B>` for an `M` and rule known only at run
+/// time (see [`with_buckets`]).
+pub(crate) trait WithBuckets {
+    /// What the work returns.
+    type Output;
+    /// Does the work with the compiled `M` and rule `B`.
+    fn run<const M: usize, B: Bucketing<M>>(self) -> Self::Output;
+}
+
+/// Runs `work` with the compiled `RegularSpectrum<M, B>` for `m` from 1 to
+/// [`MAX_BUCKETS`] and `rule`; an error for any other `m`.
+pub(crate) fn with_buckets<W: WithBuckets>(m: usize, rule: Rule, work: W) -> Result<W::Output, Error> {
     macro_rules! dispatch {
         ($($n:literal)*) => {
             match (m, rule) {
                 $(
-                    ($n, Rule::Centre) => Ok(product::<$n, Centre>(light, surface)),
-                    ($n, Rule::BoxAverage) => Ok(product::<$n, BoxAverage>(light, surface)),
+                    ($n, Rule::Centre) => Ok(work.run::<$n, Centre>()),
+                    ($n, Rule::BoxAverage) => Ok(work.run::<$n, BoxAverage>()),
                 )*
                 _ => Err(Error::UnsupportedBuckets { m, max: MAX_BUCKETS }),
             }

@@ -26,7 +26,7 @@
 
 use std::num::NonZeroUsize;
 
-use rand::SeedableRng;
+use rand::{Rng, SeedableRng};
 use rand::rngs::StdRng;
 
 use crate::sampling::regular::{self, Rule};
@@ -170,17 +170,24 @@ impl Prepared<'_> {
     /// XYZ of the light × `surface` with `samples` samples or buckets, the
     /// random methods seeded with `seed`.
     pub fn xyz(&self, surface: &TabulatedSpectrum, samples: NonZeroUsize, seed: u64) -> Result<Xyz, Error> {
+        self.xyz_with_rng(surface, samples, &mut StdRng::seed_from_u64(seed))
+    }
+
+    /// [`Prepared::xyz`] with the random methods drawing from `rng`.
+    pub fn xyz_with_rng<R: Rng + ?Sized>(
+        &self,
+        surface: &TabulatedSpectrum,
+        samples: NonZeroUsize,
+        rng: &mut R,
+    ) -> Result<Xyz, Error> {
         let light = self.light;
-        let mut rng = StdRng::seed_from_u64(seed);
         let pdf = self.pdf.as_ref().unwrap_or(&AnyPdf::Uniform);
         match self.method {
             Method::Reference => Ok(reference::xyz(light, surface)),
             Method::Random { sampling } => {
-                Ok(hero::estimate_with::<1, _>(light, surface, samples, pdf, sampling.strata, &mut rng))
+                Ok(hero::estimate_with::<1, _>(light, surface, samples, pdf, sampling.strata, rng))
             }
-            Method::Hero { k, sampling } => {
-                hero::estimate_dyn(k, light, surface, samples, pdf, sampling.strata, &mut rng)
-            }
+            Method::Hero { k, sampling } => hero::estimate_dyn(k, light, surface, samples, pdf, sampling.strata, rng),
             Method::RegularCentre => regular::xyz_dyn(samples.get(), Rule::Centre, light, surface),
             Method::RegularBox => regular::xyz_dyn(samples.get(), Rule::BoxAverage, light, surface),
         }

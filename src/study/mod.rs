@@ -14,6 +14,9 @@
 //!   balance).
 //! - [`convergence`], [`threshold`], [`compare`]: accuracy against sample
 //!   count, where it crosses a budget, one pair in detail.
+//! - [`cost`]: the measured cost of one estimate; [`chart`]: speed against
+//!   accuracy and its Pareto front; [`plan`]: the cheapest configuration
+//!   within a scene's ΔE00 budget.
 //! - [`report`]: tables and CSV.
 //!
 //! ```
@@ -25,11 +28,14 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+pub mod chart;
 pub mod compare;
 pub mod convergence;
+pub mod cost;
 pub mod grid;
 pub mod method;
 pub mod perceptual;
+pub mod plan;
 pub mod remarks;
 pub mod report;
 pub mod sampling;

@@ -111,6 +111,15 @@ impl WavelengthPdf for AnyPdf {
             AnyPdf::Light(p) => p.cdf(lambda),
         }
     }
+
+    #[inline]
+    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
+        match self {
+            AnyPdf::Uniform => Uniform.sample_with_inv_pdf(u),
+            AnyPdf::Visible => Visible.sample_with_inv_pdf(u),
+            AnyPdf::Light(p) => p.sample_with_inv_pdf(u),
+        }
+    }
 }
 
 /// A pdf and a strata: how a random method draws its wavelengths.

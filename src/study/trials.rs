@@ -38,12 +38,25 @@ pub struct Stats {
     pub sd: Xyz,
     /// Root mean square ΔE00 to the reference.
     pub rms_de00: f64,
+    /// Standard error of the mean of ΔE00² (0 for one trial): the mean
+    /// square is `rms_de00²` ± this.
+    pub mean_square_se: f64,
     /// 95th percentile (nearest rank) of ΔE00.
     pub p95_de00: f64,
     /// If the reference is in gamut: the share of trials out of gamut.
     pub false_out_of_gamut: Option<f64>,
     /// If the reference is out of gamut: the share of trials in gamut.
     pub false_in_gamut: Option<f64>,
+}
+
+impl Stats {
+    /// A 95 % confidence interval for the RMS ΔE00 (normal, on the mean of
+    /// ΔE00²): `√(mean square ∓ 1.96·se)`, the lower end at least 0.
+    #[must_use]
+    pub fn rms_de00_interval(&self) -> (f64, f64) {
+        let (square, margin) = (self.rms_de00 * self.rms_de00, 1.96 * self.mean_square_se);
+        ((square - margin).max(0.0).sqrt(), (square + margin).sqrt())
+    }
 }
 
 /// Studies `method` on `light × surface` with `samples` samples or buckets.
@@ -114,7 +127,13 @@ fn summarise(estimates: &[Xyz], reference: Xyz, white: Xyz) -> Stats {
     };
     let mut de: Vec<f64> = estimates.iter().map(|&e| perceptual::delta_e00(e, reference, white)).collect();
     de.sort_by(f64::total_cmp);
-    let rms_de00 = (de.iter().map(|d| d * d).sum::<f64>() / n).sqrt();
+    let mean_square = de.iter().map(|d| d * d).sum::<f64>() / n;
+    let rms_de00 = mean_square.sqrt();
+    let mean_square_se = if estimates.len() > 1 {
+        (de.iter().map(|d| (d * d - mean_square).powi(2)).sum::<f64>() / (n - 1.0) / n).sqrt()
+    } else {
+        0.0
+    };
     let p95_de00 = de[((0.95 * n).ceil() as usize).clamp(1, de.len()) - 1];
     let in_gamut = |x: Xyz| x.to_linear_srgb().in_gamut();
     let share = |want: bool| estimates.iter().filter(|&&e| in_gamut(e) == want).count() as f64 / n;
@@ -125,6 +144,7 @@ fn summarise(estimates: &[Xyz], reference: Xyz, white: Xyz) -> Stats {
         bias: mean - reference,
         sd,
         rms_de00,
+        mean_square_se,
         p95_de00,
         false_out_of_gamut,
         false_in_gamut,

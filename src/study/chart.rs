@@ -1,0 +1,139 @@
+//! Speed against accuracy: for each light, every charted configuration's
+//! measured cost per estimate beside its worst-patch RMS ΔE00, and the
+//! Pareto front of the two.
+//!
+//! The charted methods are [`curves`]: the assignment's random and hero,
+//! hero with each pdf under jittered numbers (and one Kronecker), centre and
+//! box buckets, and the reference as a single point. Random and hero run
+//! n = 1, 2, 4, … [`MAX_N`]; buckets every M up to 64. `examples/chart.rs`
+//! draws the points; a method added to [`curves`] appears there unchanged.
+//!
+//! ```
+//! use speclab::study::chart::pareto;
+//! // (cost, error): the middle point is beaten on both by the first.
+//! assert_eq!(pareto(&[(1.0, 1.0), (2.0, 2.0), (3.0, 0.5)]), [true, false, true]);
+//! ```
+
+use std::num::NonZeroUsize;
+
+use crate::Error;
+use crate::sampling::regular::MAX_BUCKETS;
+use crate::sampling::strata::Strata;
+use crate::study::cost::{self, Config, Cost};
+use crate::study::method::Method;
+use crate::study::sampling::{Pdf, Sampling};
+use crate::study::scene::Named;
+use crate::study::trials;
+
+/// The largest n charted for random and hero.
+pub const MAX_N: usize = 1024;
+
+/// The charted methods, one curve each (the reference is one point).
+#[must_use]
+pub fn curves() -> Vec<Method> {
+    let hero = |pdf, strata| Method::HERO.with_sampling(Sampling { pdf, strata });
+    vec![
+        Method::Reference,
+        Method::RANDOM,
+        Method::HERO,
+        hero(Pdf::Uniform, Strata::Jittered),
+        hero(Pdf::Visible, Strata::Jittered),
+        hero(Pdf::Light, Strata::Jittered),
+        hero(Pdf::Balanced, Strata::Jittered),
+        hero(Pdf::Light, Strata::Kronecker),
+        Method::RegularCentre,
+        Method::RegularBox,
+    ]
+}
+
+/// The counts charted for `method`.
+#[must_use]
+pub fn counts(method: Method) -> Vec<usize> {
+    match method {
+        Method::Reference => vec![1],
+        Method::RegularCentre | Method::RegularBox => (1..=MAX_BUCKETS).collect(),
+        _ => std::iter::successors(Some(1), |n| Some(n * 2)).take_while(|&n| n <= MAX_N).collect(),
+    }
+}
+
+/// One point of the chart.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    /// The light's name.
+    pub light: String,
+    /// The configuration.
+    pub config: Config,
+    /// Its measured cost (on the light × the first surface).
+    pub cost: Cost,
+    /// The largest RMS ΔE00 over the surfaces.
+    pub worst_rms: f64,
+    /// The mean RMS ΔE00 over the surfaces.
+    pub mean_rms: f64,
+    /// Trials behind each RMS (1 for deterministic methods).
+    pub trials: usize,
+    /// On the light's Pareto front of cost against worst RMS ΔE00.
+    pub pareto: bool,
+}
+
+/// Every configuration of `methods` under `light`, over `surfaces` (at
+/// least one), with `trials` trials per random point; Pareto flags set.
+pub fn points(
+    light: &Named,
+    surfaces: &[Named],
+    methods: &[Method],
+    trials: NonZeroUsize,
+    seed: u64,
+) -> Result<Vec<Point>, Error> {
+    let first = surfaces.first().ok_or(Error::EmptyScene)?;
+    let mut out = Vec::new();
+    for &method in methods {
+        for count in counts(method) {
+            let config = Config::new(method, NonZeroUsize::new(count).unwrap_or(NonZeroUsize::MIN));
+            let cost = cost::measure(config, &light.spectrum, &first.spectrum)?;
+            let mut rms = Vec::with_capacity(surfaces.len());
+            let mut ran = 1;
+            for s in surfaces {
+                let stats = trials::method(&light.spectrum, &s.spectrum, method, config.count, trials, seed)?;
+                ran = stats.trials;
+                rms.push(stats.rms_de00);
+            }
+            let worst_rms = rms.iter().copied().fold(0.0, f64::max);
+            let mean_rms = rms.iter().sum::<f64>() / rms.len() as f64;
+            let point = Point { light: light.name.clone(), config, cost, worst_rms, mean_rms, trials: ran, pareto: false };
+            out.push(point);
+        }
+    }
+    let front = pareto(&out.iter().map(|p| (p.cost.per_estimate_ns, p.worst_rms)).collect::<Vec<_>>());
+    for (p, on) in out.iter_mut().zip(front) {
+        p.pareto = on;
+    }
+    Ok(out)
+}
+
+/// For each `(cost, error)` point, whether no other point is at least as
+/// good in both and better in one. NaN points are never on the front.
+#[must_use]
+pub fn pareto(points: &[(f64, f64)]) -> Vec<bool> {
+    points
+        .iter()
+        .map(|&(c, e)| {
+            !c.is_nan()
+                && !e.is_nan()
+                && !points.iter().any(|&(c2, e2)| c2 <= c && e2 <= e && (c2 < c || e2 < e))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pareto_on_hand_made_points() {
+        // A staircase with points above it, a tie, a duplicate and a NaN.
+        let points = [(1.0, 5.0), (2.0, 3.0), (2.0, 4.0), (3.0, 3.0), (4.0, 1.0), (4.0, 1.0), (5.0, 0.5), (f64::NAN, 0.1)];
+        assert_eq!(pareto(&points), [true, true, false, false, true, true, true, false]);
+        assert_eq!(pareto(&[]), Vec::<bool>::new());
+        assert_eq!(pareto(&[(3.0, 3.0)]), [true]);
+    }
+}

@@ -1,0 +1,127 @@
+//! What one estimate costs: a configuration (method, pdf and strata, n or
+//! M) timed in the running process.
+//!
+//! The cost has two parts, measured apart:
+//! - **per estimate**: what a renderer pays every time (n samples drawn,
+//!   evaluated and converted; or a bucketed product and its conversion);
+//! - **preparation**: what it pays once per spectrum (building a light's
+//!   pdf table; bucketing the light and the surface).
+//!
+//! Each is the median of repeated timings, after a warm-up, on the calling
+//! thread, with batches long enough (about 0.2 ms) for the clock. Figures
+//! move with the machine's load: compare them within one run.
+//!
+//! ```
+//! use std::num::NonZeroUsize;
+//! use speclab::{data, study::{cost::{self, Config}, method::Method}};
+//! let hero = Config::new(Method::HERO, NonZeroUsize::new(16).unwrap());
+//! let c = cost::measure(hero, &data::D65, &data::A1)?;
+//! assert!(c.per_estimate_ns > 0.0);
+//! assert_eq!(hero.to_string(), "hero uniform/independent n=16");
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::fmt;
+use std::hint::black_box;
+use std::num::NonZeroUsize;
+use std::time::Instant;
+
+use rand::SeedableRng;
+use rand::rngs::StdRng;
+
+use crate::sampling::regular::{self, Bucketing, RegularSpectrum, Rule, WithBuckets};
+use crate::study::method::Method;
+use crate::{Error, TabulatedSpectrum};
+
+/// A method with its sample count n or bucket count M.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Config {
+    /// The method, with its pdf and strata for the random ones.
+    pub method: Method,
+    /// n (random, hero) or M (buckets); ignored by the reference.
+    pub count: NonZeroUsize,
+}
+
+impl Config {
+    /// `method` with `count` samples or buckets.
+    #[must_use]
+    pub fn new(method: Method, count: NonZeroUsize) -> Self {
+        Config { method, count }
+    }
+}
+
+impl fmt::Display for Config {
+    /// `hero light/jitter n=32`, `regular-box M=39`, `reference`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.method {
+            Method::Reference => write!(f, "reference"),
+            Method::RegularCentre | Method::RegularBox => write!(f, "{} M={}", self.method.name(), self.count),
+            m => {
+                let sampling = m.sampling().unwrap_or_default();
+                write!(f, "{} {sampling} n={}", m.name(), self.count)
+            }
+        }
+    }
+}
+
+/// The measured cost of a configuration, ns.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cost {
+    /// One estimate, ns.
+    pub per_estimate_ns: f64,
+    /// Once per light and surface (pdf table, bucketing), ns.
+    pub preparation_ns: f64,
+}
+
+/// The cost of `config` on `light × surface`.
+pub fn measure(config: Config, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Result<Cost, Error> {
+    let rule = match config.method {
+        Method::RegularCentre => Rule::Centre,
+        Method::RegularBox => Rule::BoxAverage,
+        method => {
+            let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
+            let prepared = method.prepare(light)?;
+            let mut rng = StdRng::seed_from_u64(0x5EED);
+            let per_estimate_ns =
+                median_ns(|| drop(black_box(prepared.xyz_with_rng(surface, config.count, &mut rng))));
+            return Ok(Cost { per_estimate_ns, preparation_ns });
+        }
+    };
+    struct Timed<'a>(&'a TabulatedSpectrum, &'a TabulatedSpectrum);
+    impl WithBuckets for Timed<'_> {
+        type Output = Cost;
+        fn run<const M: usize, B: Bucketing<M>>(self) -> Cost {
+            let bucket = |s| RegularSpectrum::<M, B>::from_spectrum(black_box(s));
+            let preparation_ns = median_ns(|| {
+                black_box((bucket(self.0), bucket(self.1)));
+            });
+            let (l, s) = (bucket(self.0), bucket(self.1));
+            let per_estimate_ns = median_ns(|| {
+                black_box((black_box(l) * black_box(s)).to_xyz());
+            });
+            Cost { per_estimate_ns, preparation_ns }
+        }
+    }
+    regular::with_buckets(config.count.get(), rule, Timed(light, surface))
+}
+
+/// The median over 7 timings of `f`'s duration, ns, after a warm-up; each
+/// timing runs `f` often enough to last about 0.2 ms.
+fn median_ns(mut f: impl FnMut()) -> f64 {
+    let start = Instant::now();
+    f();
+    f();
+    let once = start.elapsed().as_secs_f64() / 2.0;
+    let repeats = ((2e-4 / once.max(1e-9)).ceil() as usize).clamp(1, 1 << 20);
+    let mut times: Vec<f64> = (0..7)
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..repeats {
+                f();
+            }
+            start.elapsed().as_secs_f64() * 1e9 / repeats as f64
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
