@@ -115,7 +115,9 @@ impl fmt::Display for Error {
             }
             Error::UnknownSpectrum { name, expected } => write!(f, "expected {expected}, found {name:?}"),
             Error::Identifier { name } => write!(f, "expected a Rust identifier, found {name:?}"),
-            Error::EmptyScene => write!(f, "expected a scene of at least one light and one surface, found none"),
+            Error::EmptyScene => {
+                write!(f, "expected a scene of at least one light and one surface, found none")
+            }
             Error::Budget { value } => write!(f, "expected a finite positive ΔE00 budget, found {value}"),
             Error::DarkLight => {
                 write!(f, "expected a light with power where the observer sees (380-730 nm), found none")

@@ -1,5 +1,8 @@
 //! Glue shared by the examples: option values and exit statuses.
 
+// Each example uses part of this module.
+#![allow(dead_code)]
+
 use std::io;
 use std::process::ExitCode;
 
@@ -34,7 +37,6 @@ pub fn strata(name: &str) -> Result<Strata, String> {
 }
 
 /// The `--normalize` value, or a message naming the choices.
-#[allow(dead_code)] // converge has no --normalize
 pub fn normalization(name: &str) -> Result<Normalization, String> {
     Normalization::from_name(name)
         .ok_or_else(|| format!("unknown normalisation {name:?}: expected none, power or luminance"))

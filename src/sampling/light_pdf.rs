@@ -6,10 +6,12 @@
 //! so the density is one polynomial per piece, of degree at most 6. Its
 //! coefficients are exact products of the segments' polynomials, its
 //! integral per piece is exact, and the CDF at the piece ends is their
-//! running sum. Sampling finds the piece by binary search on the CDF and
-//! inverts the piece's integral, a polynomial of degree at most 7, by
-//! Newton's method safeguarded by bisection: no allocation, and the CDF of
-//! the returned wavelength equals `u` to within 1e-12.
+//! running sum. Sampling finds the piece through a guide table (the piece
+//! where each of `2 × pieces` equal slices of `[0, 1)` starts, then a step or
+//! two forward) and inverts the piece's integral, a polynomial of degree at
+//! most 7, by Halley's method from the trapezoid rule's guess, safeguarded by
+//! bisection: about three iterations, no allocation, and the CDF of the
+//! returned wavelength equals `u` to within 1e-12.
 //!
 //! This file depends on `std` only: `build.rs` includes it to tabulate the
 //! built-in lights' pdfs at compile time.
@@ -86,7 +88,8 @@ impl PiecewisePdf {
         let total = cdf[cdf.len() - 1];
         let bright = total.is_finite() && total > 0.0;
         let guide = guide(&cdf, 2 * polys.len());
-        let (ends, polys, cdf, guide) = (Cow::Owned(ends), Cow::Owned(polys), Cow::Owned(cdf), Cow::Owned(guide));
+        let (ends, polys, cdf, guide) =
+            (Cow::Owned(ends), Cow::Owned(polys), Cow::Owned(cdf), Cow::Owned(guide));
         bright.then_some(PiecewisePdf { ends, polys, cdf, guide })
     }
 
@@ -215,23 +218,44 @@ fn product(a: Coeffs, b: Coeffs) -> Poly {
     out
 }
 
-/// `p(t)` by Horner's rule.
+/// `p(t)` by Estrin's scheme: pairs, then pairs of pairs, so the chain of
+/// dependent operations is 3 deep instead of Horner's 7 (sampling inverts
+/// the CDF by iteration, and is bound by that latency).
 fn value(p: &Poly, t: f64) -> f64 {
-    p.iter().rev().fold(0.0, |acc, c| acc * t + c)
+    let t2 = t * t;
+    let t4 = t2 * t2;
+    let (a, b, c) = (p[0] + p[1] * t, p[2] + p[3] * t, p[4] + p[5] * t);
+    a + b * t2 + (c + p[6] * t2) * t4
 }
 
 /// `∫₀ᵗ p`.
 fn primitive(p: &Poly, t: f64) -> f64 {
-    t * p.iter().enumerate().rev().fold(0.0, |acc, (i, c)| acc * t + c / (i + 1) as f64)
+    primitive_of(&integrand(p), t)
+}
+
+/// `p`'s coefficients divided by their power plus one: `∫₀ᵗ p = t·q(t)`.
+fn integrand(p: &Poly) -> Poly {
+    let mut q = *p;
+    for (i, c) in q.iter_mut().enumerate() {
+        *c /= (i + 1) as f64;
+    }
+    q
+}
+
+/// `t·q(t)`, `∫₀ᵗ p` for `q = integrand(p)`.
+fn primitive_of(q: &Poly, t: f64) -> f64 {
+    t * value(q, t)
 }
 
 /// The `t` in `[0, h]` with `∫₀ᵗ p = rest`, for `p ≥ 0` of integral `mass`
-/// over the piece: Newton's method, kept inside a shrinking bracket.
+/// over the piece: Halley's method from the trapezoid rule's answer, kept
+/// inside a shrinking bracket (bisection when a step would leave it).
 fn invert(p: &Poly, rest: f64, h: f64, mass: f64) -> f64 {
     let (mut lo, mut hi) = (0.0, h);
-    let mut t = if mass > 0.0 { (h * rest / mass).clamp(0.0, h) } else { 0.0 };
+    let (q, dp) = (integrand(p), derivative(p));
+    let mut t = trapezoid_guess(p[0], value(p, h), rest, h, mass);
     for _ in 0..100 {
-        let g = primitive(p, t) - rest;
+        let g = primitive_of(&q, t) - rest;
         if g.abs() <= 1e-14 * mass.max(f64::MIN_POSITIVE) {
             break;
         }
@@ -240,12 +264,41 @@ fn invert(p: &Poly, rest: f64, h: f64, mass: f64) -> f64 {
         } else {
             lo = t
         }
-        let slope = value(p, t);
-        let newton = t - g / slope;
-        t = if slope > 0.0 && newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        // g' = p(t), g'' = p'(t); Halley's step, or Newton's where its
+        // denominator is not positive.
+        let (slope, bend) = (value(p, t), value(&dp, t));
+        let halley = 2.0 * slope * slope - g * bend;
+        let step = if halley > 0.0 { 2.0 * g * slope / halley } else { g / slope };
+        let next = t - step;
+        t = if slope > 0.0 && next > lo && next < hi { next } else { 0.5 * (lo + hi) };
         if hi - lo <= 1e-15 * h {
             break;
         }
     }
     t
+}
+
+/// Where `∫₀ᵗ = rest` if the density were the line from `a = p(0)` to
+/// `b = p(h)` (a quadratic CDF, solved in its stable form), clamped into
+/// `[0, h]`; the uniform guess where that fails.
+fn trapezoid_guess(a: f64, b: f64, rest: f64, h: f64, mass: f64) -> f64 {
+    let k = (b - a) / h;
+    let root = (a * a + 2.0 * k * rest).max(0.0).sqrt();
+    let t = 2.0 * rest / (a + root);
+    if t.is_finite() && t >= 0.0 {
+        t.min(h)
+    } else if mass > 0.0 {
+        (h * rest / mass).clamp(0.0, h)
+    } else {
+        0.0
+    }
+}
+
+/// `p'`, coefficients in `t` (degree one less, last coefficient 0).
+fn derivative(p: &Poly) -> Poly {
+    let mut d = [0.0; 7];
+    for i in 1..p.len() {
+        d[i - 1] = i as f64 * p[i];
+    }
+    d
 }

@@ -266,7 +266,8 @@ pub fn xyz_dyn(
     impl WithBuckets for Product<'_> {
         type Output = Xyz;
         fn run<const M: usize, B: Bucketing<M>>(self) -> Xyz {
-            (RegularSpectrum::<M, B>::from_spectrum(self.0) * RegularSpectrum::<M, B>::from_spectrum(self.1)).to_xyz()
+            (RegularSpectrum::<M, B>::from_spectrum(self.0) * RegularSpectrum::<M, B>::from_spectrum(self.1))
+                .to_xyz()
         }
     }
     with_buckets(m, rule, Product(light, surface))

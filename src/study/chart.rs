@@ -71,12 +71,17 @@ pub struct Point {
     pub mean_rms: f64,
     /// Trials behind each RMS (1 for deterministic methods).
     pub trials: usize,
-    /// On the light's Pareto front of cost against worst RMS ΔE00.
+    /// On the light's Pareto front of cost against worst RMS ΔE00 among
+    /// the sampling methods (never the reference: see [`points`]).
     pub pareto: bool,
 }
 
 /// Every configuration of `methods` under `light`, over `surfaces` (at
-/// least one), with `trials` trials per random point; Pareto flags set.
+/// least one), with `trials` trials per random point; Pareto flags set
+/// among the sampling methods. The reference is charted as a point but is
+/// not on the front: it is the yardstick (ΔE00 0 by definition), and it
+/// integrates one light × one surface exactly, which a path's product of
+/// many spectra does not allow.
 pub fn points(
     light: &Named,
     surfaces: &[Named],
@@ -99,12 +104,29 @@ pub fn points(
             }
             let worst_rms = rms.iter().copied().fold(0.0, f64::max);
             let mean_rms = rms.iter().sum::<f64>() / rms.len() as f64;
-            let point = Point { light: light.name.clone(), config, cost, worst_rms, mean_rms, trials: ran, pareto: false };
+            let point = Point {
+                light: light.name.clone(),
+                config,
+                cost,
+                worst_rms,
+                mean_rms,
+                trials: ran,
+                pareto: false,
+            };
             out.push(point);
         }
     }
-    let front = pareto(&out.iter().map(|p| (p.cost.per_estimate_ns, p.worst_rms)).collect::<Vec<_>>());
-    for (p, on) in out.iter_mut().zip(front) {
+    // The reference is the yardstick, not a contender: its ΔE00 is 0 by
+    // definition, and it needs every spectrum of a path, which a renderer
+    // multiplying many spectra per path does not integrate exactly.
+    let contenders: Vec<(f64, f64)> = out
+        .iter()
+        .map(|p| match p.config.method {
+            Method::Reference => (f64::NAN, f64::NAN),
+            _ => (p.cost.per_estimate_ns, p.worst_rms),
+        })
+        .collect();
+    for (p, on) in out.iter_mut().zip(pareto(&contenders)) {
         p.pareto = on;
     }
     Ok(out)
@@ -131,7 +153,16 @@ mod tests {
     #[test]
     fn pareto_on_hand_made_points() {
         // A staircase with points above it, a tie, a duplicate and a NaN.
-        let points = [(1.0, 5.0), (2.0, 3.0), (2.0, 4.0), (3.0, 3.0), (4.0, 1.0), (4.0, 1.0), (5.0, 0.5), (f64::NAN, 0.1)];
+        let points = [
+            (1.0, 5.0),
+            (2.0, 3.0),
+            (2.0, 4.0),
+            (3.0, 3.0),
+            (4.0, 1.0),
+            (4.0, 1.0),
+            (5.0, 0.5),
+            (f64::NAN, 0.1),
+        ];
         assert_eq!(pareto(&points), [true, true, false, false, true, true, true, false]);
         assert_eq!(pareto(&[]), Vec::<bool>::new());
         assert_eq!(pareto(&[(3.0, 3.0)]), [true]);

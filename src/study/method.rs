@@ -26,8 +26,8 @@
 
 use std::num::NonZeroUsize;
 
-use rand::{Rng, SeedableRng};
 use rand::rngs::StdRng;
+use rand::{Rng, SeedableRng};
 
 use crate::sampling::regular::{self, Rule};
 use crate::sampling::{hero, reference};
@@ -187,7 +187,9 @@ impl Prepared<'_> {
             Method::Random { sampling } => {
                 Ok(hero::estimate_with::<1, _>(light, surface, samples, pdf, sampling.strata, rng))
             }
-            Method::Hero { k, sampling } => hero::estimate_dyn(k, light, surface, samples, pdf, sampling.strata, rng),
+            Method::Hero { k, sampling } => {
+                hero::estimate_dyn(k, light, surface, samples, pdf, sampling.strata, rng)
+            }
             Method::RegularCentre => regular::xyz_dyn(samples.get(), Rule::Centre, light, surface),
             Method::RegularBox => regular::xyz_dyn(samples.get(), Rule::BoxAverage, light, surface),
         }

@@ -29,8 +29,8 @@
 
 use std::num::NonZeroUsize;
 
-use crate::sampling::regular::{self, MAX_BUCKETS, Rule};
 use crate::sampling::reference;
+use crate::sampling::regular::{self, MAX_BUCKETS, Rule};
 use crate::study::cost::{self, Config, Cost};
 use crate::study::method::{Method, derive_seed};
 use crate::study::sampling::Sampling;
@@ -53,7 +53,12 @@ pub struct Request {
 
 impl Default for Request {
     fn default() -> Self {
-        Request { budget: 1.0, allow_bias: true, trials: NonZeroUsize::new(200).unwrap_or(NonZeroUsize::MIN), seed: 1 }
+        Request {
+            budget: 1.0,
+            allow_bias: true,
+            trials: NonZeroUsize::new(200).unwrap_or(NonZeroUsize::MIN),
+            seed: 1,
+        }
     }
 }
 
@@ -109,20 +114,48 @@ pub struct Plan {
     pub others: Vec<Candidate>,
 }
 
-/// Plans `lights × surfaces` for `request`. Errors for an empty scene or a
-/// budget that is not finite and positive.
+/// Plans `lights × surfaces` for `request`, with every candidate's cost
+/// measured now (see [`costs`]). Errors for an empty scene or a budget that
+/// is not finite and positive.
 pub fn plan(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<Plan, Error> {
-    let (Some(light), Some(surface)) = (lights.first(), surfaces.first()) else {
+    validate(lights, surfaces, request)?;
+    plan_with_costs(lights, surfaces, request, &costs(&lights[0], &surfaces[0])?)
+}
+
+/// An error for an empty scene or a budget that is not finite and positive.
+fn validate(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<(), Error> {
+    if lights.is_empty() || surfaces.is_empty() {
         return Err(Error::EmptyScene);
-    };
+    }
     if !(request.budget.is_finite() && request.budget > 0.0) {
         return Err(Error::Budget { value: request.budget });
     }
-    let scene = Scene::new(lights, surfaces);
-    let mut candidates = Vec::new();
+    Ok(())
+}
+
+/// Every candidate configuration with its cost measured on `light ×
+/// surface` (the reference excepted), in increasing cost per estimate.
+pub fn costs(light: &Named, surface: &Named) -> Result<Vec<(Config, Cost)>, Error> {
+    let mut out = Vec::new();
     for config in configs() {
-        candidates.push((config, cost::measure(config, &light.spectrum, &surface.spectrum)?));
+        out.push((config, cost::measure(config, &light.spectrum, &surface.spectrum)?));
     }
+    out.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
+    Ok(out)
+}
+
+/// [`plan`] with costs measured before (by [`costs`]): the same costs give
+/// the same plan for any seed whose trials agree, which timing noise
+/// would otherwise blur.
+pub fn plan_with_costs(
+    lights: &[Named],
+    surfaces: &[Named],
+    request: &Request,
+    costs: &[(Config, Cost)],
+) -> Result<Plan, Error> {
+    validate(lights, surfaces, request)?;
+    let scene = Scene::new(lights, surfaces);
+    let mut candidates = costs.to_vec();
     candidates.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
     let (centre, boxed) = (scene.bucket_errors(Rule::Centre)?, scene.bucket_errors(Rule::BoxAverage)?);
     let mut plan = Plan { chosen: None, runners_up: Vec::new(), others: Vec::new() };
@@ -195,7 +228,11 @@ impl<'a> Scene<'a> {
             .map(|m| {
                 let mut worst = (f64::NEG_INFINITY, String::new());
                 for (l, s, exact, white) in &self.cells {
-                    let de = perceptual::delta_e00(regular::xyz_dyn(m, rule, &l.spectrum, &s.spectrum)?, *exact, *white);
+                    let de = perceptual::delta_e00(
+                        regular::xyz_dyn(m, rule, &l.spectrum, &s.spectrum)?,
+                        *exact,
+                        *white,
+                    );
                     if de > worst.0 {
                         worst = (de, format!("{} × {}", l.name, s.name));
                     }
@@ -214,7 +251,9 @@ impl<'a> Scene<'a> {
             for (c, (l, s, exact, white)) in self.cells.iter().enumerate() {
                 let prepared = config.method.prepare(&l.spectrum)?;
                 let base = derive_seed(request.seed, (c as u64) << 1 | stage);
-                let stats = trials::run(*exact, *white, trials, base, |seed| prepared.xyz(&s.spectrum, config.count, seed))?;
+                let stats = trials::run(*exact, *white, trials, base, |seed| {
+                    prepared.xyz(&s.spectrum, config.count, seed)
+                })?;
                 let (lower, upper) = stats.rms_de00_interval();
                 let cell = format!("{} × {}", l.name, s.name);
                 if stage == 0 && lower > request.budget {

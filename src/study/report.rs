@@ -17,6 +17,11 @@
 
 use std::io::{self, Write};
 
+mod chart;
+mod plan;
+pub use chart::chart_csv;
+pub use plan::plan_text;
+
 use crate::color::srgb;
 use crate::study::compare::{Line, Settings};
 use crate::study::convergence;

@@ -1,0 +1,94 @@
+//! A plan for a scene: the cheapest way of sampling wavelengths, in
+//! measured ns per estimate, whose worst RMS ΔE00 over every light ×
+//! surface of the scene stays within a budget.
+//!
+//! ```text
+//! cargo run --release --example plan -- --light F11 --surface all
+//! cargo run --release --example plan -- --light all --surface all --budget 0.5 --unbiased
+//! cargo run --release --example plan -- --light-file lamp.csv --surface A1 --surface-file paint.json
+//! ```
+
+mod common;
+
+use std::io;
+use std::process::ExitCode;
+
+use common::{fail, finish};
+use speclab::Role;
+use speclab::study::plan::{self, Request};
+use speclab::study::report;
+use speclab::study::scene::{self, Choice, Named};
+
+const USAGE: &str = "\
+usage: plan --light NAME|all ... --surface NAME|all ... [--budget B] [--unbiased] [--trials T] [--seed S]
+  --light NAME         A, D65, F11, or all; repeat for more lights
+  --light-file PATH    a light from a file (brace, CSV/TSV or JSON); repeatable
+  --surface NAME       E2, F4, G4, H4, J4, A1, or all; repeat for more surfaces
+  --surface-file PATH  a reflectance from a file; repeatable
+  --budget B           the largest acceptable RMS ΔE00 in any light × surface (default 1)
+  --unbiased           exclude biased methods (regular buckets)
+  --trials T           trials per Monte Carlo light × surface (default 200)
+  --seed S             base seed (default 1)";
+
+struct Args {
+    lights: Vec<Choice>,
+    surfaces: Vec<Choice>,
+    request: Request,
+}
+
+/// `name`, or every built-in one for `all`.
+fn names(name: String, builtin: fn() -> Vec<Named>) -> Vec<Choice> {
+    if name.eq_ignore_ascii_case("all") {
+        builtin().into_iter().map(|n| Choice::Name(n.name)).collect()
+    } else {
+        vec![Choice::Name(name)]
+    }
+}
+
+fn parse_args() -> Result<Args, lexopt::Error> {
+    use lexopt::prelude::*;
+    let mut args = Args { lights: Vec::new(), surfaces: Vec::new(), request: Request::default() };
+    let mut parser = lexopt::Parser::from_env();
+    while let Some(arg) = parser.next()? {
+        match arg {
+            Long("light") => args.lights.extend(names(parser.value()?.string()?, scene::builtin_lights)),
+            Long("surface") => {
+                args.surfaces.extend(names(parser.value()?.string()?, scene::builtin_surfaces))
+            }
+            Long("light-file") => args.lights.push(Choice::File(parser.value()?.into())),
+            Long("surface-file") => args.surfaces.push(Choice::File(parser.value()?.into())),
+            Long("budget") => args.request.budget = parser.value()?.parse()?,
+            Long("unbiased") => args.request.allow_bias = false,
+            Long("trials") => args.request.trials = parser.value()?.parse()?,
+            Long("seed") => args.request.seed = parser.value()?.parse()?,
+            Short('h') | Long("help") => {
+                println!("{USAGE}");
+                std::process::exit(0);
+            }
+            _ => return Err(arg.unexpected()),
+        }
+    }
+    Ok(args)
+}
+
+fn resolve(choices: &[Choice], role: Role) -> Result<Vec<Named>, speclab::Error> {
+    choices.iter().map(|c| c.resolve(role)).collect()
+}
+
+fn main() -> ExitCode {
+    let args = match parse_args() {
+        Ok(args) => args,
+        Err(e) => return fail("plan", format!("{e}\n{USAGE}")),
+    };
+    let scene =
+        resolve(&args.lights, Role::Light).and_then(|l| Ok((l, resolve(&args.surfaces, Role::Reflectance)?)));
+    let (lights, surfaces) = match scene {
+        Ok(scene) => scene,
+        Err(e) => return fail("plan", e),
+    };
+    let plan = match plan::plan(&lights, &surfaces, &args.request) {
+        Ok(plan) => plan,
+        Err(e) => return fail("plan", format!("{e}\n{USAGE}")),
+    };
+    finish("plan", report::plan_text(&mut io::stdout().lock(), &lights, &surfaces, &args.request, &plan))
+}
