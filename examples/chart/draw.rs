@@ -8,7 +8,6 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use speclab::study::chart::Point;
 use speclab::study::method::Method;
-use speclab::study::sampling::Pdf;
 
 /// Panel and legend sizes, px.
 const PANEL: (u32, u32) = (620, 560);
@@ -22,20 +21,28 @@ struct Look {
     label: String,
 }
 
-fn look(method: Method) -> Look {
-    let (colour, triangle) = match method {
-        Method::Reference => (RGBColor(0, 0, 0), false),
-        Method::Random { .. } => (RGBColor(127, 127, 127), false),
-        Method::RegularCentre => (RGBColor(44, 160, 44), true),
-        Method::RegularBox => (RGBColor(140, 86, 75), true),
-        Method::Hero { sampling, .. } => match (sampling.pdf, sampling.strata.name()) {
-            (Pdf::Uniform, "independent") => (RGBColor(31, 119, 180), false),
-            (Pdf::Uniform, _) => (RGBColor(23, 190, 207), false),
-            (Pdf::Visible, _) => (RGBColor(148, 103, 189), false),
-            (Pdf::Light, "kronecker") => (RGBColor(227, 119, 194), true),
-            (Pdf::Light, _) => (RGBColor(214, 39, 40), false),
-            (Pdf::Balanced, _) => (RGBColor(255, 127, 14), false),
-        },
+/// Colours told apart by most readers (Tableau 10, then darker extras), in
+/// the order of the curves; the reference is black.
+const PALETTE: [RGBColor; 12] = [
+    RGBColor(127, 127, 127),
+    RGBColor(31, 119, 180),
+    RGBColor(23, 190, 207),
+    RGBColor(227, 119, 194),
+    RGBColor(148, 103, 189),
+    RGBColor(214, 39, 40),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(140, 86, 75),
+    RGBColor(188, 189, 34),
+    RGBColor(0, 0, 128),
+    RGBColor(128, 0, 0),
+];
+
+/// The look of the `index`-th curve, `method`.
+fn look(method: Method, index: usize) -> Look {
+    let colour = match method {
+        Method::Reference => RGBColor(0, 0, 0),
+        _ => PALETTE[index.saturating_sub(1) % PALETTE.len()],
     };
     let label = match method {
         Method::Reference => "reference (exact: ΔE00 0, drawn on the axis)".to_string(),
@@ -43,7 +50,20 @@ fn look(method: Method) -> Look {
         Method::RegularBox => "regular, box mean of M buckets".to_string(),
         m => format!("{} {}", m.name(), m.sampling().unwrap_or_default()),
     };
+    let triangle = matches!(method, Method::RegularCentre | Method::RegularBox);
     Look { colour, triangle, label }
+}
+
+/// The methods of `points`, in their order: a method's index here picks its
+/// colour in every panel and the legend.
+fn methods<'a>(points: impl IntoIterator<Item = &'a Point>) -> Vec<Method> {
+    let mut out: Vec<Method> = Vec::new();
+    for p in points {
+        if !out.contains(&p.config.method) {
+            out.push(p.config.method);
+        }
+    }
+    out
 }
 
 /// Whether count `n` of `method` gets a label beside its point: the last
@@ -83,12 +103,12 @@ pub fn svg(points: &[Point], trials: usize) -> Result<String, Failure> {
         );
         title.titled(&heading, ("sans-serif", 20)).map_err(|e| e.to_string())?;
         let areas = panels.split_evenly((1, lights.len().max(1)));
-        let ranges = ranges(points);
+        let (ranges, order) = (ranges(points), methods(points));
         for (area, light) in areas.iter().zip(&lights) {
             let mine: Vec<&Point> = points.iter().filter(|p| p.light == *light).collect();
-            panel(area, light, &mine, ranges)?;
+            panel(area, light, &mine, &order, ranges)?;
         }
-        draw_legend(&legend, points)?;
+        draw_legend(&legend, &order)?;
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(text)
@@ -113,6 +133,7 @@ fn panel(
     area: &Area,
     light: &str,
     points: &[&Point],
+    order: &[Method],
     ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
 ) -> Result<(), Failure> {
     let err = |e: DrawingAreaErrorKind<_>| e.to_string();
@@ -146,20 +167,14 @@ fn panel(
         let at = (x0 * 1.15, budget * 1.12);
         chart.draw_series([Text::new(format!("ΔE00 {budget}"), at, ("sans-serif", 13))]).map_err(err)?;
     }
-    let mut methods: Vec<Method> = Vec::new();
-    for p in points {
-        if !methods.contains(&p.config.method) {
-            methods.push(p.config.method);
-        }
-    }
-    for method in methods {
+    for (index, &method) in order.iter().enumerate() {
         let curve: Vec<&&Point> = points.iter().filter(|p| p.config.method == method).collect();
-        curve_series(&mut chart, method, &curve, y0).map_err(err)?;
+        curve_series(&mut chart, look(method, index), method, &curve, y0).map_err(err)?;
     }
     let reference = points.iter().filter(|p| p.config.method == Method::Reference);
     let font = ("sans-serif", 13).into_font();
     let labels =
-        reference.map(|p| Text::new("reference", (p.cost.per_estimate_ns * 1.15, y0 * 1.15), font.clone()));
+        reference.map(|p| Text::new("reference", (p.cost.per_estimate_ns * 1.3, y0 * 1.6), font.clone()));
     chart.draw_series(labels).map_err(err)?;
     Ok(())
 }
@@ -169,11 +184,11 @@ type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>,
 /// One method's line, markers and count labels.
 fn curve_series(
     chart: &mut Chart,
+    look: Look,
     method: Method,
     curve: &[&&Point],
     y0: f64,
 ) -> Result<(), DrawingAreaErrorKind<std::io::Error>> {
-    let look = look(method);
     let xy: Vec<(f64, f64)> = curve.iter().map(|p| (p.cost.per_estimate_ns, p.worst_rms.max(y0))).collect();
     let style = look.colour.stroke_width(2);
     chart.draw_series(LineSeries::new(xy.clone(), style))?;
@@ -195,19 +210,13 @@ fn curve_series(
 }
 
 /// The legend: one entry per method, in rows below the panels.
-fn draw_legend(area: &Area, points: &[Point]) -> Result<(), Failure> {
-    let mut methods: Vec<Method> = Vec::new();
-    for p in points {
-        if !methods.contains(&p.config.method) {
-            methods.push(p.config.method);
-        }
-    }
+fn draw_legend(area: &Area, order: &[Method]) -> Result<(), Failure> {
     let (width, _) = area.dim_in_pixel();
     let columns = 4usize;
     let cell = (width as i32 - 40) / columns as i32;
     let font = ("sans-serif", 14).into_font();
-    for (i, method) in methods.into_iter().enumerate() {
-        let look = look(method);
+    for (i, &method) in order.iter().enumerate() {
+        let look = look(method, i);
         let (x, y) = (20 + (i % columns) as i32 * cell, 14 + (i / columns) as i32 * 24);
         let line = PathElement::new([(x, y), (x + 26, y)], look.colour.stroke_width(3));
         area.draw(&line).map_err(|e| e.to_string())?;

@@ -3,8 +3,8 @@
 //! Pareto front of the two.
 //!
 //! The charted methods are [`curves`]: the assignment's random and hero,
-//! hero with each pdf under jittered numbers (and one Kronecker), centre and
-//! box buckets, and the reference as a single point. Random and hero run
+//! hero with each strata and with each pdf, centre and box buckets, and the
+//! reference as a single point. Random and hero run
 //! n = 1, 2, 4, … [`MAX_N`]; buckets every M up to 64. `examples/chart.rs`
 //! draws the points; a method added to [`curves`] appears there unchanged.
 //!
@@ -28,22 +28,19 @@ use crate::study::trials;
 /// The largest n charted for random and hero.
 pub const MAX_N: usize = 1024;
 
-/// The charted methods, one curve each (the reference is one point).
+/// The charted methods, one curve each (the reference is one point): the
+/// assignment's random, hero with every strata under the uniform pdf, hero
+/// with every other pdf under jittered numbers, and both bucket rules. A pdf
+/// or strata added to [`Pdf::ALL`] or [`Strata::ALL`] is charted with no
+/// change here.
 #[must_use]
 pub fn curves() -> Vec<Method> {
     let hero = |pdf, strata| Method::HERO.with_sampling(Sampling { pdf, strata });
-    vec![
-        Method::Reference,
-        Method::RANDOM,
-        Method::HERO,
-        hero(Pdf::Uniform, Strata::Jittered),
-        hero(Pdf::Visible, Strata::Jittered),
-        hero(Pdf::Light, Strata::Jittered),
-        hero(Pdf::Balanced, Strata::Jittered),
-        hero(Pdf::Light, Strata::Kronecker),
-        Method::RegularCentre,
-        Method::RegularBox,
-    ]
+    let mut out = vec![Method::Reference, Method::RANDOM];
+    out.extend(Strata::ALL.map(|strata| hero(Pdf::Uniform, strata)));
+    out.extend(Pdf::ALL.into_iter().filter(|&p| p != Pdf::Uniform).map(|pdf| hero(pdf, Strata::Jittered)));
+    out.extend([Method::RegularCentre, Method::RegularBox]);
+    out
 }
 
 /// The counts charted for `method`.
