@@ -105,7 +105,7 @@ fn main() -> ExitCode {
     match run(&args) {
         Ok((light, surface, lines)) => {
             let white = args.settings.viewing.white(&light.spectrum);
-            let swatches = common::colour().then(|| Display::new(Exposure::for_white(white), args.gamut));
+            let swatches = common::colour().then(|| Display::new(Exposure::fit_white(white), args.gamut));
             let out = &mut io::stdout().lock();
             let written =
                 report::compare_table(out, &light.name, &surface.name, &args.settings, &lines, swatches);

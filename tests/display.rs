@@ -68,7 +68,7 @@ fn every_8bit_code_survives_decode_and_encode() {
 }
 
 #[test]
-fn exposure_puts_each_white_at_luminance_one() {
+fn exposure_puts_the_white_at_luminance_one_or_just_in_the_display() {
     for light in [&data::A, &data::D65, &data::F11] {
         let white = reference::white(light);
         let exposed = Exposure::for_white(white).apply(white.to_linear_srgb());
@@ -76,6 +76,14 @@ fn exposure_puts_each_white_at_luminance_one() {
         let pixel = Display::new(Exposure::for_white(white), GamutMap::Chroma).pixel(white.to_linear_srgb());
         assert_eq!(pixel, Srgb8::new(255, 255, 255));
     }
+    // Fitted, A's white keeps its orange: red at full scale, then green, then blue.
+    let a = reference::white(&data::A).to_linear_srgb();
+    let fitted = Exposure::fit_white(reference::white(&data::A)).apply(a);
+    assert!((fitted.r - 1.0).abs() < 1e-12 && fitted.luminance() < 0.7, "{fitted:?}");
+    let Srgb8 { r, g, b } =
+        Display::new(Exposure::fit_white(reference::white(&data::A)), GamutMap::Chroma).pixel(a);
+    assert!(r == 255 && g < 255 && b < g, "{r} {g} {b}");
+    assert_eq!(Exposure::fit_white(Xyz::new(-1.0, f64::NAN, 0.0)).factor(), 0.0);
     assert_eq!(Exposure::new(2.5).apply(grey(0.2)), grey(0.5));
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert_eq!(Exposure::new(bad).factor(), 0.0, "{bad}");

@@ -2,8 +2,10 @@
 //! small steps that renderers and the study's pictures share.
 //!
 //! 1. **Exposure** ([`Exposure`]): scale linear sRGB so that the perfect
-//!    white under the light has Y = 1 ([`Exposure::for_white`]), or by a
-//!    given factor ([`Exposure::new`]).
+//!    white under the light has Y = 1 ([`Exposure::for_white`]), so that
+//!    it just fits the display with its own colour
+//!    ([`Exposure::fit_white`]: brightest channel 1), or by a given factor
+//!    ([`Exposure::new`]).
 //! 2. **Gamut mapping** ([`GamutMap`]): bring a colour with a component
 //!    below 0 or above 1 into the display cube [0, 1]³, either per channel
 //!    ([`clip`]) or keeping hue and luminance and reducing chroma toward the
@@ -76,6 +78,17 @@ impl Exposure {
     #[must_use]
     pub fn for_white(white: Xyz) -> Exposure {
         Exposure::new(1.0 / white.y)
+    }
+
+    /// The largest exposure at which `white` shows unchanged: its brightest
+    /// linear sRGB channel at 1. A neutral white lands at Y ≈ 1, as with
+    /// [`Exposure::for_white`]; a coloured one (A's orange, F11's
+    /// yellow-green) keeps its colour instead of reaching Y = 1, where only
+    /// the display white fits. A white with no positive channel gives 0.
+    #[must_use]
+    pub fn fit_white(white: Xyz) -> Exposure {
+        let brightest = white.to_linear_srgb().to_array().into_iter().fold(0.0, f64::max);
+        Exposure::new(1.0 / brightest)
     }
 
     /// The factor.

@@ -48,7 +48,8 @@ pub fn grid_csv(out: &mut impl Write, rows: &[Row], viewing: &Viewing) -> io::Re
 
 /// Grid rows as a table per light, each estimate beside the reference with
 /// its distance and ΔE00; with `swatches`, a truecolour swatch per row
-/// (the light's white at Y = 1, mapped into the gamut as it says).
+/// (exposed by `Exposure::fit_white` for the light's white, mapped into the
+/// gamut as it says).
 pub fn grid_table(
     out: &mut impl Write,
     grid: &Grid,
@@ -86,7 +87,7 @@ pub fn grid_table(
             writeln!(out, "{pad}{a:<5} {b:<15} {c:>10} {d:>10} {e:>10}  {f:>9} {g:>7} {i:>7}")?;
         }
         let white = viewing.white(&light.spectrum);
-        let display = swatches.map(|gamut| Display::new(Exposure::for_white(white), gamut));
+        let display = swatches.map(|gamut| Display::new(Exposure::fit_white(white), gamut));
         let reference = cell.iter().find(|r| r.method == Method::Reference).map(|r| r.xyz);
         let reference = reference.map(|x| viewing.adapt(x, &light.spectrum));
         for row in cell {
@@ -142,7 +143,10 @@ fn swatch_legend(gamut: GamutMap) -> String {
         GamutMap::Clip => "clipped per channel",
         GamutMap::Chroma => "out-of-gamut colours desaturated, hue and luminance kept",
     };
-    format!("swatches: the light's white at Y = 1, {how} (--gamut {}), sRGB-encoded", gamut.name())
+    format!(
+        "swatches: exposed so the light's white just fits the display in its own colour; {how} (--gamut {}); sRGB",
+        gamut.name()
+    )
 }
 
 /// bias X, Y, Z; sd X, Y, Z; RMS and p95 ΔE00.
@@ -260,7 +264,7 @@ pub fn converge_summary(
 
 /// The lines of [`crate::study::compare::compare`] as a table; with
 /// `swatches`, a truecolour swatch per line shown through that display
-/// (its exposure for the light's white: `Exposure::for_white`).
+/// (its exposure for the light's white: `Exposure::fit_white`).
 pub fn compare_table(
     out: &mut impl Write,
     light: &str,
