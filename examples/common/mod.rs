@@ -15,6 +15,7 @@ pub fn fail(program: &str, message: impl std::fmt::Display) -> ExitCode {
 }
 
 /// Success, or status 2 for a write error other than a closed pipe (`| head`).
+#[allow(dead_code)] // swatches writes a file
 pub fn finish(program: &str, written: io::Result<()>) -> ExitCode {
     match written {
         Err(e) if e.kind() != io::ErrorKind::BrokenPipe => fail(program, e),
@@ -23,19 +24,21 @@ pub fn finish(program: &str, written: io::Result<()>) -> ExitCode {
 }
 
 /// The `--pdf` value, or a message naming the choices.
+#[allow(dead_code)] // swatches has fixed columns
 pub fn pdf(name: &str) -> Result<Pdf, String> {
     Pdf::from_name(name)
         .ok_or_else(|| format!("unknown pdf {name:?}: expected uniform, visible, light or balanced"))
 }
 
 /// The `--strata` value, or a message naming the choices.
+#[allow(dead_code)] // swatches has fixed columns
 pub fn strata(name: &str) -> Result<Strata, String> {
     Strata::from_name(name)
         .ok_or_else(|| format!("unknown strata {name:?}: expected independent, jitter or kronecker"))
 }
 
 /// The `--normalize` value, or a message naming the choices.
-#[allow(dead_code)] // converge has no --normalize
+#[allow(dead_code)] // converge and swatches have no --normalize
 pub fn normalization(name: &str) -> Result<Normalization, String> {
     Normalization::from_name(name)
         .ok_or_else(|| format!("unknown normalisation {name:?}: expected none, power or luminance"))
