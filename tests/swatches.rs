@@ -4,6 +4,8 @@
 //! carry the pixel the display pipeline gives the exact colour, and every
 //! pixel of a Monte Carlo swatch is its own estimate, seeded reproducibly.
 
+#![cfg(feature = "study")]
+
 #[path = "../examples/common/png.rs"]
 mod png_file;
 
