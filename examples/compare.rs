@@ -14,6 +14,7 @@ use std::process::ExitCode;
 
 use common::{fail, finish};
 use speclab::Role;
+use speclab::color::{Display, Exposure, GamutMap};
 use speclab::sampling::hero;
 use speclab::study::compare::{self, Settings};
 use speclab::study::report;
@@ -31,12 +32,15 @@ usage: compare [options]
   --normalize none|power|luminance   scale the light first (default none)
   --white-balance                    Bradford-adapt the light's white to D65's before sRGB
   --pdf uniform|visible|light|balanced           random and hero wavelengths' density (default uniform)
-  --strata independent|jitter|kronecker          how their primary numbers are spread (default independent)";
+  --strata independent|jitter|kronecker          how their primary numbers are spread (default independent)
+  --gamut clip|chroma    how terminal swatches show out-of-gamut colours (default chroma: keep
+                         hue and luminance, desaturate); the numbers stay unclamped";
 
 struct Args {
     light: Choice,
     surface: Choice,
     settings: Settings,
+    gamut: GamutMap,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -45,6 +49,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         light: Choice::Name("D65".into()),
         surface: Choice::Name("A1".into()),
         settings: Settings::default(),
+        gamut: GamutMap::default(),
     };
     let s = &mut a.settings;
     let mut parser = lexopt::Parser::from_env();
@@ -73,6 +78,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("white-balance") => s.viewing.white_balance = true,
             Long("pdf") => s.sampling.pdf = common::pdf(&parser.value()?.string()?)?,
             Long("strata") => s.sampling.strata = common::strata(&parser.value()?.string()?)?,
+            Long("gamut") => a.gamut = common::gamut(&parser.value()?.string()?)?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);
@@ -98,8 +104,12 @@ fn main() -> ExitCode {
     };
     match run(&args) {
         Ok((light, surface, lines)) => {
+            let white = args.settings.viewing.white(&light.spectrum);
+            let swatches = common::colour().then(|| Display::new(Exposure::fit_white(white), args.gamut));
             let out = &mut io::stdout().lock();
-            finish("compare", report::compare_table(out, &light.name, &surface.name, &args.settings, &lines))
+            let written =
+                report::compare_table(out, &light.name, &surface.name, &args.settings, &lines, swatches);
+            finish("compare", written)
         }
         Err(e) => fail("compare", e),
     }

@@ -9,11 +9,12 @@
 
 mod common;
 
-use std::io::{self, IsTerminal};
+use std::io;
 use std::process::ExitCode;
 
 use common::{fail, finish};
 use speclab::Role;
+use speclab::color::GamutMap;
 use speclab::study::grid::Grid;
 use speclab::study::remarks::Viewing;
 use speclab::study::report;
@@ -23,6 +24,7 @@ const USAGE: &str = "\
 usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-file PATH]
             [--normalize none|power|luminance] [--white-balance]
             [--pdf uniform|visible|light|balanced] [--strata independent|jitter|kronecker]
+            [--gamut clip|chroma]
   --n N                samples for random and hero (default 100)
   --m M                buckets for regular sampling, 1 to 64 (default 16)
   --seed S             base seed of the random methods (default 1)
@@ -33,7 +35,9 @@ usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-fi
                        power (mean power 1 over 380-730 nm), luminance (white Y = 100)
   --white-balance      Bradford-adapt each light's white to D65's before sRGB
   --pdf PDF            random and hero wavelengths' density (default uniform, as the assignment)
-  --strata STRATA      how their primary numbers are spread (default independent)";
+  --strata STRATA      how their primary numbers are spread (default independent)
+  --gamut MAP          how terminal swatches show out-of-gamut colours: clip per channel,
+                       or chroma (default: keep hue and luminance, desaturate); numbers stay unclamped";
 
 struct Args {
     grid: Grid,
@@ -41,6 +45,7 @@ struct Args {
     lights: Vec<Choice>,
     surfaces: Vec<Choice>,
     viewing: Viewing,
+    gamut: GamutMap,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
@@ -52,6 +57,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         lights: names(&["A", "D65", "F11"]),
         surfaces: names(&["E2", "F4", "G4", "H4", "J4", "A1"]),
         viewing: Viewing::default(),
+        gamut: GamutMap::default(),
     };
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
@@ -66,6 +72,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("white-balance") => args.viewing.white_balance = true,
             Long("pdf") => args.grid.sampling.pdf = common::pdf(&parser.value()?.string()?)?,
             Long("strata") => args.grid.sampling.strata = common::strata(&parser.value()?.string()?)?,
+            Long("gamut") => args.gamut = common::gamut(&parser.value()?.string()?)?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);
@@ -104,8 +111,8 @@ fn main() -> ExitCode {
     let written = if args.csv {
         report::grid_csv(out, &rows, &args.viewing)
     } else {
-        let colour = io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
-        report::grid_table(out, &args.grid, &args.viewing, &rows, colour)
+        let swatches = common::colour().then_some(args.gamut);
+        report::grid_table(out, &args.grid, &args.viewing, &rows, swatches)
     };
     finish("grid", written)
 }

@@ -1,6 +1,8 @@
 //! The chart's outputs: the CSV has one row per point and names the Pareto
 //! front; the SVG is well-formed XML with one panel per light.
 
+#![cfg(feature = "study")]
+
 #[path = "../examples/chart/draw.rs"]
 #[allow(dead_code)]
 mod draw;

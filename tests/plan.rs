@@ -6,6 +6,8 @@
 //! that timing noise (which may reorder configurations of near-equal cost)
 //! is not mistaken for seed dependence.
 
+#![cfg(feature = "study")]
+
 use std::num::NonZeroUsize;
 
 use speclab::Error;

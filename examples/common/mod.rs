@@ -3,9 +3,10 @@
 // Each example uses part of this module.
 #![allow(dead_code)]
 
-use std::io;
+use std::io::{self, IsTerminal};
 use std::process::ExitCode;
 
+use speclab::color::GamutMap;
 use speclab::sampling::strata::Strata;
 use speclab::study::remarks::Normalization;
 use speclab::study::sampling::Pdf;
@@ -40,4 +41,15 @@ pub fn strata(name: &str) -> Result<Strata, String> {
 pub fn normalization(name: &str) -> Result<Normalization, String> {
     Normalization::from_name(name)
         .ok_or_else(|| format!("unknown normalisation {name:?}: expected none, power or luminance"))
+}
+
+/// The `--gamut` value, or a message naming the choices.
+pub fn gamut(name: &str) -> Result<GamutMap, String> {
+    GamutMap::from_name(name).ok_or_else(|| format!("unknown gamut map {name:?}: expected clip or chroma"))
+}
+
+/// True if standard output takes truecolour swatches: a terminal, and
+/// `NO_COLOR` unset or empty.
+pub fn colour() -> bool {
+    io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }

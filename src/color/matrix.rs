@@ -16,16 +16,29 @@ pub fn mul(m: &Matrix, v: [f64; 3]) -> [f64; 3] {
     m.map(|row| row[0] * v[0] + row[1] * v[1] + row[2] * v[2])
 }
 
-/// The inverse of `m` by cofactors (all zero if `m` is singular).
+/// The inverse of `m` by cofactors (all zero if `m` is singular); a
+/// `const fn`, so inverses of constant matrices are constants.
 #[must_use]
-pub fn inverse(m: &Matrix) -> Matrix {
-    let cof = |r: usize, c: usize| {
-        let (r1, r2, c1, c2) = ((r + 1) % 3, (r + 2) % 3, (c + 1) % 3, (c + 2) % 3);
-        m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]
-    };
-    let det = m[0][0] * cof(0, 0) + m[0][1] * cof(0, 1) + m[0][2] * cof(0, 2);
+pub const fn inverse(m: &Matrix) -> Matrix {
+    let det = m[0][0] * cofactor(m, 0, 0) + m[0][1] * cofactor(m, 0, 1) + m[0][2] * cofactor(m, 0, 2);
     let scale = if det != 0.0 { 1.0 / det } else { 0.0 };
-    std::array::from_fn(|r| std::array::from_fn(|c| cof(c, r) * scale))
+    let mut inv = [[0.0; 3]; 3];
+    let mut r = 0;
+    while r < 3 {
+        let mut c = 0;
+        while c < 3 {
+            inv[r][c] = cofactor(m, c, r) * scale;
+            c += 1;
+        }
+        r += 1;
+    }
+    inv
+}
+
+/// The cofactor of entry `(r, c)`: the signed minor, by cyclic indices.
+const fn cofactor(m: &Matrix, r: usize, c: usize) -> f64 {
+    let (r1, r2, c1, c2) = ((r + 1) % 3, (r + 2) % 3, (c + 1) % 3, (c + 2) % 3);
+    m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]
 }
 
 #[cfg(test)]

@@ -7,7 +7,10 @@
 //! - [`LinearSrgb`]: XYZ through the matrix of Appendix 1, part D,
 //!   **unclamped**: a negative component means the colour is outside the
 //!   sRGB gamut, which is information, not an error.
-//! - [`srgb`]: the IEC 61966-2-1 transfer function, for display.
+//! - [`srgb`]: the IEC 61966-2-1 transfer function.
+//! - [`display`]: the pipeline from a colour to a pixel: exposure, gamut
+//!   mapping (clip, or keep hue and luminance), encoding, 8 bits; linear
+//!   and encoded sRGB as different types.
 //! - [`adaptation`]: Bradford chromatic adaptation between whites.
 //!
 //! ```
@@ -18,10 +21,12 @@
 //! ```
 
 pub mod adaptation;
+pub mod display;
 pub mod matrix;
 pub mod srgb;
 mod xyz;
 
+pub use display::{Display, EncodedSrgb, Exposure, GamutMap, Srgb8};
 pub use matrix::Matrix;
 pub use srgb::{LinearSrgb, XYZ_TO_SRGB};
 pub use xyz::Xyz;

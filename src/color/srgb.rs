@@ -13,10 +13,18 @@
 //! assert!((decode(encode(0.5)) - 0.5).abs() < 1e-15);
 //! ```
 
-use crate::color::Matrix;
+use crate::color::Xyz;
+use crate::color::matrix::{Matrix, inverse, mul};
 
 /// XYZ → linear sRGB, from `data/xyz_to_srgb.txt` (Appendix 1, part D).
 pub const XYZ_TO_SRGB: Matrix = crate::spectrum::data::XYZ_TO_SRGB;
+
+/// Linear sRGB → XYZ: the inverse of [`XYZ_TO_SRGB`], computed at compile
+/// time. Its middle row, the luminance of `r, g, b`, is 0.21262, 0.71514,
+/// 0.07215 (the standard's 0.2126, 0.7152, 0.0722 to four decimals; the
+/// part D matrix is printed with four), so the display white `(1, 1, 1)`
+/// has Y = 0.99991.
+pub const SRGB_TO_XYZ: Matrix = inverse(&XYZ_TO_SRGB);
 
 /// Below this linear value the curve is a line of slope 12.92.
 pub const LINEAR_TOE: f64 = 0.003_130_8;
@@ -75,6 +83,21 @@ impl LinearSrgb {
         self.r >= 0.0 && self.g >= 0.0 && self.b >= 0.0
     }
 
+    /// CIE Y (luminance), by the middle row of [`SRGB_TO_XYZ`].
+    #[inline]
+    #[must_use]
+    pub fn luminance(self) -> f64 {
+        let [wr, wg, wb] = SRGB_TO_XYZ[1];
+        wr * self.r + wg * self.g + wb * self.b
+    }
+
+    /// Back to XYZ by [`SRGB_TO_XYZ`].
+    #[must_use]
+    pub fn to_xyz(self) -> Xyz {
+        let [x, y, z] = mul(&SRGB_TO_XYZ, self.to_array());
+        Xyz::new(x, y, z)
+    }
+
     /// Euclidean distance to `other`.
     #[must_use]
     pub fn distance(self, other: LinearSrgb) -> f64 {
@@ -113,5 +136,13 @@ mod tests {
         assert_eq!(to_8bit(encode(1.0)), 255);
         assert_eq!(to_8bit(encode(0.0)), 0);
         assert_eq!(to_8bit(encode(0.18)), 118);
+    }
+
+    #[test]
+    fn back_to_xyz() {
+        let xyz = Xyz::new(0.3, 0.5, 0.2);
+        let back = xyz.to_linear_srgb().to_xyz();
+        assert!((back - xyz).to_array().iter().all(|d| d.abs() < 1e-12), "{back:?}");
+        assert!((xyz.to_linear_srgb().luminance() - 0.5).abs() < 1e-12);
     }
 }

@@ -18,6 +18,9 @@
 //!   accuracy and its Pareto front; [`plan`]: the cheapest configuration
 //!   within a scene's ΔE00 budget.
 //! - [`report`]: tables and CSV.
+//! - [`swatches`]: every light × patch by every method as swatches whose
+//!   pixels are independent estimates; [`sheet`] lays them out as a
+//!   labelled image, with the built-in bitmap [`font`].
 //!
 //! ```
 //! use std::num::NonZeroUsize;
@@ -32,6 +35,7 @@ pub mod chart;
 pub mod compare;
 pub mod convergence;
 pub mod cost;
+pub mod font;
 pub mod grid;
 pub mod method;
 pub mod perceptual;
@@ -40,6 +44,8 @@ pub mod remarks;
 pub mod report;
 pub mod sampling;
 pub mod scene;
+pub mod sheet;
+pub mod swatches;
 pub mod threshold;
 pub mod trials;
 pub mod variance;

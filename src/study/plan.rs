@@ -23,7 +23,9 @@
 //! let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
 //! let plan = plan::plan(&lights[..1], &surfaces, &Request::default())?; // illuminant A
 //! let chosen = plan.chosen.expect("A is easy");
-//! assert!(chosen.config.to_string().starts_with("regular-centre")); // a dozen centre buckets
+//! // A dozen buckets (about 10 ns) beat every Monte Carlo method that gets
+//! // within budget (a microsecond and more).
+//! assert!(!chosen.config.method.is_random());
 //! # Ok::<(), speclab::Error>(())
 //! ```
 

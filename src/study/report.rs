@@ -22,7 +22,7 @@ mod plan;
 pub use chart::chart_csv;
 pub use plan::plan_text;
 
-use crate::color::srgb;
+use crate::color::display::{Display, Exposure, GamutMap, Srgb8};
 use crate::study::compare::{Line, Settings};
 use crate::study::convergence;
 use crate::study::grid::{Grid, Row};
@@ -52,13 +52,15 @@ pub fn grid_csv(out: &mut impl Write, rows: &[Row], viewing: &Viewing) -> io::Re
 }
 
 /// Grid rows as a table per light, each estimate beside the reference with
-/// its distance and ΔE00; with `colour`, a truecolour swatch per row.
+/// its distance and ΔE00; with `swatches`, a truecolour swatch per row
+/// (exposed by `Exposure::fit_white` for the light's white, mapped into the
+/// gamut as it says).
 pub fn grid_table(
     out: &mut impl Write,
     grid: &Grid,
     viewing: &Viewing,
     rows: &[Row],
-    colour: bool,
+    swatches: Option<GamutMap>,
 ) -> io::Result<()> {
     writeln!(out, "speclab grid: linear sRGB (unclamped) of light × patch, by method")?;
     let (n, m, seed, sampling) = (grid.n, grid.m, grid.seed, grid.sampling);
@@ -75,6 +77,9 @@ pub fn grid_table(
         "Δ = distance to the reference in sRGB (and % of its length); ΔE00 in CIELAB of the light's white"
     )?;
     writeln!(out, "! = out of gamut (a negative component)")?;
+    if let Some(gamut) = swatches {
+        writeln!(out, "{}", swatch_legend(gamut))?;
+    }
     let mut previous_light = "";
     for cell in rows.chunk_by(|a, b| a.light.name == b.light.name && a.surface.name == b.surface.name) {
         let light = &cell[0].light;
@@ -83,14 +88,16 @@ pub fn grid_table(
             writeln!(out, "\nLight {previous_light}")?;
             let h = ["patch", "method", "R", "G", "B", "Δ", "Δ%", "ΔE00"];
             let (a, b, c, d, e, f, g, i) = (h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7]);
-            writeln!(out, "{a:<5} {b:<15} {c:>10} {d:>10} {e:>10}  {f:>9} {g:>7} {i:>7}")?;
+            let pad = swatch_pad(swatches.is_some());
+            writeln!(out, "{pad}{a:<5} {b:<15} {c:>10} {d:>10} {e:>10}  {f:>9} {g:>7} {i:>7}")?;
         }
         let white = viewing.white(&light.spectrum);
+        let display = swatches.map(|gamut| Display::new(Exposure::fit_white(white), gamut));
         let reference = cell.iter().find(|r| r.method == Method::Reference).map(|r| r.xyz);
         let reference = reference.map(|x| viewing.adapt(x, &light.spectrum));
         for row in cell {
             let xyz = viewing.adapt(row.xyz, &light.spectrum);
-            grid_line(out, row, xyz, reference, white, colour)?;
+            grid_line(out, row, xyz, reference, white, display)?;
         }
     }
     Ok(())
@@ -104,11 +111,11 @@ fn grid_line(
     xyz: Xyz,
     reference: Option<Xyz>,
     white: Xyz,
-    colour: bool,
+    display: Option<Display>,
 ) -> io::Result<()> {
     let rgb = xyz.to_linear_srgb();
     let patch = if row.method == Method::Reference { row.surface.name.as_str() } else { "" };
-    let swatch = if colour { swatch(rgb, white.y) } else { String::new() };
+    let swatch = display.map_or_else(String::new, |d| swatch(d.pixel(rgb)));
     let flag = if rgb.in_gamut() { ' ' } else { '!' };
     let name = row.method.name();
     write!(out, "{swatch}{patch:<5} {name:<15} {:>10.3} {:>10.3} {:>10.3}{flag}", rgb.r, rgb.g, rgb.b)?;
@@ -124,12 +131,27 @@ fn grid_line(
     }
 }
 
-/// Two truecolour cells showing `rgb` scaled so the light's white is 1,
-/// clipped and sRGB-encoded.
-fn swatch(rgb: LinearSrgb, white_y: f64) -> String {
-    let scale = if white_y > 0.0 { 1.0 / white_y } else { 0.0 };
-    let [r, g, b] = rgb.to_array().map(|c| srgb::to_8bit(srgb::encode(c * scale)));
+/// Two truecolour terminal cells showing `pixel`.
+fn swatch(pixel: Srgb8) -> String {
+    let Srgb8 { r, g, b } = pixel;
     format!("\x1b[48;2;{r};{g};{b}m  \x1b[0m ")
+}
+
+/// Blanks as wide as a swatch, to align headers over rows that have one.
+fn swatch_pad(swatches: bool) -> &'static str {
+    if swatches { "   " } else { "" }
+}
+
+/// What the swatches show, for a table's header.
+fn swatch_legend(gamut: GamutMap) -> String {
+    let how = match gamut {
+        GamutMap::Clip => "clipped per channel",
+        GamutMap::Chroma => "out-of-gamut colours desaturated, hue and luminance kept",
+    };
+    format!(
+        "swatches: exposed so the light's white just fits the display in its own colour; {how} (--gamut {}); sRGB",
+        gamut.name()
+    )
 }
 
 /// bias X, Y, Z; sd X, Y, Z; RMS and p95 ΔE00.
@@ -245,13 +267,16 @@ pub fn converge_summary(
     writeln!(out, "\n– : not reached within the counts studied.")
 }
 
-/// The lines of [`crate::study::compare::compare`] as a table.
+/// The lines of [`crate::study::compare::compare`] as a table; with
+/// `swatches`, a truecolour swatch per line shown through that display
+/// (its exposure for the light's white: `Exposure::fit_white`).
 pub fn compare_table(
     out: &mut impl Write,
     light: &str,
     surface: &str,
     s: &Settings,
     lines: &[Line],
+    swatches: Option<Display>,
 ) -> io::Result<()> {
     let balance = if s.viewing.white_balance { "Bradford to D65" } else { "off" };
     let normalize = s.viewing.normalize.name();
@@ -261,18 +286,30 @@ pub fn compare_table(
         s.seed, s.trials
     )?;
     writeln!(out, "random and hero wavelengths: {}", s.sampling)?;
+    if let Some(display) = swatches {
+        writeln!(out, "{}", swatch_legend(display.gamut))?;
+    }
     let h = ["technique", "evals", "R", "G", "B", "gamut", "ΔE00", "RMS ΔE00"];
     writeln!(
         out,
-        "{:<18} {:>6} {:>11} {:>11} {:>11}  {:>6} {:>8} {:>8}",
-        h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7]
+        "{}{:<18} {:>6} {:>11} {:>11} {:>11}  {:>6} {:>8} {:>8}",
+        swatch_pad(swatches.is_some()),
+        h[0],
+        h[1],
+        h[2],
+        h[3],
+        h[4],
+        h[5],
+        h[6],
+        h[7]
     )?;
     for l in lines {
         let gamut = if l.rgb.in_gamut() { "in" } else { "OUT" };
         let LinearSrgb { r, g, b } = l.rgb;
+        let swatch = swatches.map_or_else(String::new, |d| swatch(d.pixel(l.rgb)));
         writeln!(
             out,
-            "{:<18} {:>6} {r:>11.4} {g:>11.4} {b:>11.4}  {gamut:>6} {:>8.3} {:>8.3}",
+            "{swatch}{:<18} {:>6} {r:>11.4} {g:>11.4} {b:>11.4}  {gamut:>6} {:>8.3} {:>8.3}",
             l.label, l.evals, l.de00, l.rms_de00
         )?;
     }
