@@ -13,6 +13,7 @@ use speclab::study::chart::{self, Point};
 use speclab::study::method::Method;
 use speclab::study::report;
 use speclab::study::scene::{builtin_lights, builtin_surfaces};
+use speclab::study::trials;
 
 /// Real points for the three lights: the reference and both bucket rules
 /// (deterministic, so quick), over two patches.
@@ -65,4 +66,24 @@ fn the_svg_is_well_formed_with_three_panels() {
     }
     assert_eq!(texts.iter().filter(|t| t.starts_with("Light ")).count(), 3);
     assert!(draw::svg(&[], 2).is_ok(), "no points still draws an empty chart");
+}
+
+#[test]
+fn worst_and_mean_are_over_the_surfaces() {
+    let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
+    let (f11, surfaces) = (&lights[2], &surfaces[..2]);
+    let trials = NonZeroUsize::new(2).unwrap();
+    let points = chart::points(f11, surfaces, &[Method::RegularBox], trials, 1).unwrap();
+    for p in &points[..8] {
+        let rms: Vec<f64> = surfaces
+            .iter()
+            .map(|s| {
+                let stats = trials::method(&f11.spectrum, &s.spectrum, Method::RegularBox, p.config.count, trials, 1);
+                stats.unwrap().rms_de00
+            })
+            .collect();
+        assert_ne!(rms[0], rms[1]);
+        assert_eq!(p.worst_rms, rms[0].max(rms[1]), "M = {}", p.config.count);
+        assert!((p.mean_rms - (rms[0] + rms[1]) / 2.0).abs() <= 1e-12 * p.worst_rms, "M = {}", p.config.count);
+    }
 }

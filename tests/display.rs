@@ -85,10 +85,22 @@ fn exposure_puts_the_white_at_luminance_one_or_just_in_the_display() {
     assert!(r == 255 && g < 255 && b < g, "{r} {g} {b}");
     assert_eq!(Exposure::fit_white(Xyz::new(-1.0, f64::NAN, 0.0)).factor(), 0.0);
     assert_eq!(Exposure::new(2.5).apply(grey(0.2)), grey(0.5));
+    assert_eq!(Exposure::new(2.5).factor(), 2.5);
     for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert_eq!(Exposure::new(bad).factor(), 0.0, "{bad}");
     }
     assert_eq!(Exposure::for_white(Xyz::new(1.0, 0.0, 1.0)).factor(), 0.0);
+}
+
+#[test]
+fn gamut_maps_by_name() {
+    assert_eq!(GamutMap::Clip.name(), "clip");
+    assert_eq!(GamutMap::Chroma.name(), "chroma");
+    for map in GamutMap::ALL {
+        assert_eq!(GamutMap::from_name(map.name()), Some(map));
+    }
+    assert_eq!(GamutMap::from_name("Clip"), None);
+    assert_eq!(GamutMap::from_name(""), None);
 }
 
 #[test]
@@ -101,6 +113,19 @@ fn chroma_map_edge_cases() {
     let out = reduce_chroma(LinearSrgb::new(1.6, 0.4, 0.3));
     assert!((out.r - 1.0).abs() < 1e-15 && out.g > 0.4 && out.b > 0.3, "{out:?}");
     assert_eq!(clip(LinearSrgb::new(1.6, -0.4, f64::NAN)), LinearSrgb::new(1.0, 0.0, 0.0));
+    // A channel exactly at the grey of equal luminance stays there (no
+    // division by its zero offset): g is the fixed point of g = Y(r, g, b)/Y(white).
+    let (r, b) = (1.2, 0.0);
+    let grey_of = |g: f64| LinearSrgb::new(r, g, b).luminance() / WHITE_LUMINANCE;
+    let g = (0..200).fold(0.5, |g, _| grey_of(g));
+    assert_eq!(grey_of(g), g, "a fixed point in f64");
+    let out = reduce_chroma(LinearSrgb::new(r, g, b));
+    assert!(in_unit_cube(out) && out.g == g && (out.r - 1.0).abs() < 1e-15, "{out:?}");
+}
+
+#[test]
+fn srgb8_to_array() {
+    assert_eq!(Srgb8::new(1, 2, 3).to_array(), [1, 2, 3]);
 }
 
 fn any_f64() -> impl Strategy<Value = f64> {

@@ -151,6 +151,8 @@ impl GamutMap {
 #[inline]
 #[must_use]
 pub fn clip(rgb: LinearSrgb) -> LinearSrgb {
+    // `v > 0.0` rather than `>=`: equal results at 0 (and at −0.0, which
+    // compares equal to 0); the comparison is false for NaN, hence 0.
     let c = |v: f64| if v > 0.0 { v.min(1.0) } else { 0.0 };
     LinearSrgb::new(c(rgb.r), c(rgb.g), c(rgb.b))
 }
@@ -193,6 +195,8 @@ pub fn reduce_chroma(rgb: LinearSrgb) -> LinearSrgb {
     }
     let grey = y / WHITE_LUMINANCE;
     // The largest t in [0, 1] that keeps grey + t·(c − grey) in [0, 1]³.
+    // (`d >= 0.0` in the first test would be equivalent: (1 − grey)/0 = ∞
+    // leaves t as it is.)
     let t = c.iter().fold(1.0_f64, |t, &v| {
         let d = v - grey;
         if d > 0.0 {

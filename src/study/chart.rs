@@ -164,4 +164,21 @@ mod tests {
         assert_eq!(pareto(&[]), Vec::<bool>::new());
         assert_eq!(pareto(&[(3.0, 3.0)]), [true]);
     }
+
+    #[test]
+    fn curves_and_counts() {
+        let curves = curves();
+        // Reference, random, hero × every strata, hero × every other pdf, 2 bucket rules.
+        assert_eq!(curves.len(), 2 + Strata::ALL.len() + Pdf::ALL.len() - 1 + 2);
+        for (i, a) in curves.iter().enumerate() {
+            assert!(curves[i + 1..].iter().all(|b| b != a), "{a:?} twice");
+        }
+        for pdf in Pdf::ALL.into_iter().filter(|&p| p != Pdf::Uniform) {
+            let hero = Method::HERO.with_sampling(Sampling { pdf, strata: Strata::Jittered });
+            assert!(curves.contains(&hero), "{hero:?}");
+        }
+        assert_eq!(counts(Method::HERO), [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]);
+        assert_eq!(counts(Method::RegularBox), (1..=64).collect::<Vec<_>>());
+        assert_eq!(counts(Method::Reference), [1]);
+    }
 }
