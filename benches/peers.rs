@@ -144,7 +144,9 @@ fn print_table(rows: &[Row], runs: &[Vec<f64>]) {
     let col = |i: usize| median(runs.iter().map(|r| r[i]).collect());
     let ratio = |i: usize, to: usize| median(runs.iter().map(|r| r[i] / r[to]).collect());
     println!("\nspeclab speed, median of 3 runs (F11 × H4; one core unless stated; ratios within each run)");
-    println!("last column: the time per wavelength, call or spectrum over the hand-tuned kernel's per wavelength");
+    println!(
+        "last column: the time per wavelength, call or spectrum over the hand-tuned kernel's per wavelength"
+    );
     println!("| path | target | measured | ÷ hand-tuned |\n|---|---|---|---|");
     for (i, row) in rows.iter().enumerate() {
         let measured = match row.unit {

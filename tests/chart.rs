@@ -78,12 +78,17 @@ fn worst_and_mean_are_over_the_surfaces() {
         let rms: Vec<f64> = surfaces
             .iter()
             .map(|s| {
-                let stats = trials::method(&f11.spectrum, &s.spectrum, Method::RegularBox, p.config.count, trials, 1);
+                let stats =
+                    trials::method(&f11.spectrum, &s.spectrum, Method::RegularBox, p.config.count, trials, 1);
                 stats.unwrap().rms_de00
             })
             .collect();
         assert_ne!(rms[0], rms[1]);
         assert_eq!(p.worst_rms, rms[0].max(rms[1]), "M = {}", p.config.count);
-        assert!((p.mean_rms - (rms[0] + rms[1]) / 2.0).abs() <= 1e-12 * p.worst_rms, "M = {}", p.config.count);
+        assert!(
+            (p.mean_rms - (rms[0] + rms[1]) / 2.0).abs() <= 1e-12 * p.worst_rms,
+            "M = {}",
+            p.config.count
+        );
     }
 }

@@ -11,6 +11,7 @@
 use std::num::NonZeroUsize;
 
 use speclab::Error;
+use speclab::study::cost::{Config, Cost};
 use speclab::study::method::Method;
 use speclab::study::plan::{self, Request, Verdict};
 use speclab::study::scene::{Named, builtin_lights, builtin_surfaces};
@@ -91,4 +92,33 @@ fn bad_requests_are_errors() {
         assert!(matches!(err, Error::Budget { .. }), "{budget}: {err}");
         assert!(err.to_string().starts_with("expected a finite positive ΔE00 budget, found"), "{err}");
     }
+}
+
+/// Hand-made costs, so that the order of the candidates is fixed.
+fn costs(configs: &[(Method, usize)]) -> Vec<(Config, Cost)> {
+    let cost = |i: usize| Cost { per_estimate_ns: 1.0 + i as f64, preparation_ns: 0.0 };
+    configs
+        .iter()
+        .enumerate()
+        .map(|(i, &(m, n))| (Config::new(m, NonZeroUsize::new(n).unwrap()), cost(i)))
+        .collect()
+}
+
+#[test]
+fn buckets_are_judged_at_every_larger_count() {
+    // Under A, centre buckets are below ΔE00 1 at M = 11 and 12, above at
+    // 13, and below from 14 on (the README's table): 11 is unstable.
+    let (lights, surfaces) = (light("A"), builtin_surfaces());
+    let two = costs(&[(Method::RegularCentre, 11), (Method::RegularCentre, 14)]);
+    let plan = plan::plan_with_costs(&lights, &surfaces, &request(1), &two).unwrap();
+    assert!(matches!(plan.others[0].verdict, Verdict::Unstable { worst, m: 13 } if worst < 1.0));
+    let chosen = plan.chosen.unwrap();
+    assert_eq!((chosen.config.method, chosen.config.count.get()), (Method::RegularCentre, 14));
+    // A budget equal to the worst value is met: within means ≤.
+    let at64 = costs(&[(Method::RegularCentre, 64)]);
+    let plan = plan::plan_with_costs(&lights, &surfaces, &request(1), &at64).unwrap();
+    let Some(Verdict::Within { worst }) = plan.chosen.map(|c| c.verdict) else { panic!("M = 64 within 1") };
+    let tight = Request { budget: worst, ..request(1) };
+    let plan = plan::plan_with_costs(&lights, &surfaces, &tight, &at64).unwrap();
+    assert!(matches!(plan.chosen.map(|c| c.verdict), Some(Verdict::Within { worst: w }) if w == worst));
 }

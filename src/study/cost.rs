@@ -120,17 +120,44 @@ fn median_ns(mut f: impl FnMut()) -> f64 {
     let start = Instant::now();
     f();
     f();
+    // The calibration sets only how long each timing lasts, not what it
+    // reports: another estimate of `once` gives the same figures, noisier.
     let once = start.elapsed().as_secs_f64() / 2.0;
     let repeats = ((2e-4 / once.max(1e-9)).ceil() as usize).clamp(1, 1 << 20);
-    let mut times: Vec<f64> = (0..7)
+    let times: Vec<f64> = (0..7)
         .map(|_| {
             let start = Instant::now();
             for _ in 0..repeats {
                 f();
             }
-            start.elapsed().as_secs_f64() * 1e9 / repeats as f64
+            ns_per_call(start.elapsed().as_secs_f64(), repeats)
         })
         .collect();
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
+    median(times)
+}
+
+/// `seconds` for `calls` calls, as ns per call.
+fn ns_per_call(seconds: f64, calls: usize) -> f64 {
+    seconds * 1e9 / calls as f64
+}
+
+/// The middle value of an odd number of values.
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_and_arithmetic() {
+        let n = |k| NonZeroUsize::new(k).unwrap();
+        assert_eq!(Config::new(Method::RegularBox, n(39)).to_string(), "regular-box M=39");
+        assert_eq!(Config::new(Method::Reference, n(1)).to_string(), "reference");
+        assert_eq!(Config::new(Method::RANDOM, n(8)).to_string(), "random uniform/independent n=8");
+        assert_eq!(ns_per_call(2e-4, 50), 4000.0);
+        assert_eq!(median(vec![5.0, 1.0, 4.0, 2.0, 3.0, 7.0, 6.0]), 4.0);
+    }
 }

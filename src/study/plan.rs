@@ -235,6 +235,7 @@ impl<'a> Scene<'a> {
                         *exact,
                         *white,
                     );
+                    // (`>=` would name the later of two cells tied exactly.)
                     if de > worst.0 {
                         worst = (de, format!("{} × {}", l.name, s.name));
                     }
@@ -252,12 +253,17 @@ impl<'a> Scene<'a> {
         for (stage, trials) in [(0u64, screen.min(request.trials)), (1, request.trials)] {
             for (c, (l, s, exact, white)) in self.cells.iter().enumerate() {
                 let prepared = config.method.prepare(&l.spectrum)?;
+                // One stream per cell and stage. Another injective choice
+                // (`^` for `|` is the same here) changes only which draws.
                 let base = derive_seed(request.seed, (c as u64) << 1 | stage);
                 let stats = trials::run(*exact, *white, trials, base, |seed| {
                     prepared.xyz(&s.spectrum, config.count, seed)
                 })?;
                 let (lower, upper) = stats.rms_de00_interval();
                 let cell = format!("{} × {}", l.name, s.name);
+                // The screen only saves time: it stops a cell whose lower
+                // bound from a tenth of the trials is already above budget,
+                // which the full run would (almost surely) reject too.
                 if stage == 0 && lower > request.budget {
                     return Ok(Verdict::Above { worst: lower, cell });
                 }
@@ -270,5 +276,85 @@ impl<'a> Scene<'a> {
             }
         }
         Ok(Verdict::Within { worst })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bucket_verdicts_on_hand_made_errors() {
+        let worst = |v: &[f64]| v.iter().map(|&e| (e, "cell".to_string())).collect::<Vec<_>>();
+        let errors = worst(&[2.0, 1.0, 1.0, 0.5]);
+        assert_eq!(bucket_verdict(&errors, 1, 1.0), Verdict::Above { worst: 2.0, cell: "cell".into() });
+        // Equal to the budget is within, at M and at every larger M.
+        assert_eq!(bucket_verdict(&errors, 2, 1.0), Verdict::Within { worst: 1.0 });
+        assert_eq!(bucket_verdict(&errors, 4, 1.0), Verdict::Within { worst: 0.5 });
+        // Above again two counts later: the first such M is named.
+        let errors = worst(&[0.5, 0.6, 2.0, 0.1]);
+        assert_eq!(bucket_verdict(&errors, 1, 1.0), Verdict::Unstable { worst: 0.5, m: 3 });
+        assert_eq!(bucket_verdict(&errors, 2, 1.0), Verdict::Unstable { worst: 0.6, m: 3 });
+    }
+
+    /// The upper end of the 95 % interval of each cell's full run, computed
+    /// the way the module says: its own stream per cell, all the trials.
+    fn full_run_bounds(scene: &Scene, config: Config, request: &Request) -> Vec<(f64, f64)> {
+        let cells = scene.cells.iter().enumerate();
+        cells
+            .map(|(c, (l, s, exact, white))| {
+                let prepared = config.method.prepare(&l.spectrum).unwrap();
+                let base = derive_seed(request.seed, (c as u64) << 1 | 1);
+                let stats = trials::run(*exact, *white, request.trials, base, |seed| {
+                    prepared.xyz(&s.spectrum, config.count, seed)
+                });
+                let stats = stats.unwrap();
+                (stats.rms_de00, stats.rms_de00_interval().1)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn monte_carlo_verdicts_use_the_full_run_of_every_cell() {
+        let (lights, surfaces) =
+            (crate::study::scene::builtin_lights(), crate::study::scene::builtin_surfaces());
+        let scene = Scene::new(&lights[..1], &surfaces[..3]);
+        let config = Config::new(Method::HERO, NonZeroUsize::new(4).unwrap());
+        let loose = Request { budget: 100.0, trials: NonZeroUsize::new(40).unwrap(), ..Request::default() };
+        let bounds = full_run_bounds(&scene, config, &loose);
+        let worst = bounds.iter().map(|b| b.1).fold(0.0, f64::max);
+        let within = scene.monte_carlo_verdict(config, &loose).unwrap();
+        assert_eq!(within, Verdict::Within { worst });
+        // A budget equal to the worst upper bound is met; just below, it is
+        // not, and the cell named is the one with that bound.
+        let at = Request { budget: worst, ..loose };
+        assert_eq!(scene.monte_carlo_verdict(config, &at).unwrap(), Verdict::Within { worst });
+        let below = Request { budget: worst * (1.0 - 1e-12), ..loose };
+        let cell = bounds.iter().position(|b| b.1 == worst).unwrap();
+        let name = format!("{} × {}", lights[0].name, surfaces[cell].name);
+        let above = Verdict::Above { worst: bounds[cell].0, cell: name };
+        assert_eq!(scene.monte_carlo_verdict(config, &below).unwrap(), above);
+    }
+
+    #[test]
+    fn a_clear_failure_is_stopped_by_the_screen() {
+        let (lights, surfaces) =
+            (crate::study::scene::builtin_lights(), crate::study::scene::builtin_surfaces());
+        let scene = Scene::new(&lights[..1], &surfaces[..1]);
+        let config = Config::new(Method::RANDOM, NonZeroUsize::MIN);
+        let request = Request { budget: 0.01, ..Request::default() };
+        // The screen: a tenth of the trials (20), stream 0; its lower bound.
+        let (_, _, exact, white) = scene.cells[0];
+        let prepared = config.method.prepare(&lights[0].spectrum).unwrap();
+        let screen = trials::run(exact, white, NonZeroUsize::new(20).unwrap(), derive_seed(1, 0), |seed| {
+            prepared.xyz(&surfaces[0].spectrum, config.count, seed)
+        });
+        let lower = screen.unwrap().rms_de00_interval().0;
+        assert!(lower > request.budget);
+        let cell = format!("{} × {}", lights[0].name, surfaces[0].name);
+        assert_eq!(
+            scene.monte_carlo_verdict(config, &request).unwrap(),
+            Verdict::Above { worst: lower, cell }
+        );
     }
 }

@@ -73,3 +73,63 @@ fn reason(verdict: &Verdict) -> String {
         Verdict::NotTried => "not needed".into(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use std::num::NonZeroUsize;
+
+    use super::*;
+    use crate::study::cost::{Config, Cost};
+    use crate::study::method::Method;
+    use crate::study::scene::{builtin_lights, builtin_surfaces};
+
+    fn candidate(count: usize, ns: f64, verdict: Verdict) -> Candidate {
+        let config = Config::new(Method::RegularBox, NonZeroUsize::new(count).unwrap());
+        Candidate { config, cost: Cost { per_estimate_ns: ns, preparation_ns: 0.5 }, verdict }
+    }
+
+    #[test]
+    fn the_text_names_the_scene_the_plan_and_every_candidate_tried() {
+        let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
+        let above = Verdict::Above { worst: 2.0, cell: "F11 × A1".into() };
+        let others = vec![
+            candidate(1, 1.0, above),
+            candidate(2, 2.0, Verdict::Unstable { worst: 0.9, m: 3 }),
+            candidate(5, 5.0, Verdict::NotTried),
+            candidate(6, 6.0, Verdict::NotTried),
+        ];
+        let plan = Plan {
+            chosen: Some(candidate(3, 3.0, Verdict::Within { worst: 0.8 })),
+            runners_up: vec![candidate(4, 4.0, Verdict::Within { worst: 0.7 })],
+            others,
+        };
+        let mut out = Vec::new();
+        plan_text(&mut out, &lights[..2], &surfaces[..3], &Request::default(), &plan).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert!(text.contains("scene: lights A, D65; surfaces E2, F4, G4 (6 cells)"), "{text}");
+        assert!(text.contains("bias: allowed"), "{text}");
+        let lines: Vec<&str> = text.lines().filter(|l| l.contains(" ns  (prep ")).collect();
+        assert_eq!(lines.len(), 4, "{text}");
+        assert!(lines[0].starts_with("plan ") && lines[0].ends_with("within budget: worst 0.800"), "{text}");
+        assert!(lines[1].starts_with("runner-up ") && lines[1].ends_with("worst 0.700"), "{text}");
+        assert!(lines[2].ends_with("above budget: 2.000 in F11 × A1"), "{text}");
+        assert!(lines[3].ends_with("unstable: 0.900 here, above budget again at M=3"), "{text}");
+        assert!(text.contains("\nnot chosen, cheapest first:\n"), "{text}");
+        assert!(text.ends_with("\n2 costlier candidates were not needed.\n"), "{text}");
+    }
+
+    #[test]
+    fn nothing_within_budget_and_nothing_skipped() {
+        let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
+        let plan =
+            Plan { chosen: None, runners_up: Vec::new(), others: vec![candidate(1, 1.0, Verdict::Biased)] };
+        let unbiased = Request { allow_bias: false, ..Request::default() };
+        let mut out = Vec::new();
+        plan_text(&mut out, &lights[..1], &surfaces[..1], &unbiased, &plan).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert!(text.contains("plan         none: no candidate is within budget"), "{text}");
+        assert!(text.contains("bias: excluded (--unbiased)"), "{text}");
+        assert!(text.trim_end().ends_with("biased (excluded)"), "{text}");
+        assert!(!text.contains("not needed"), "{text}");
+    }
+}
