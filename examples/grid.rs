@@ -28,7 +28,7 @@ usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-fi
   --n N                samples for random and hero (default 100)
   --m M                buckets for regular sampling, 1 to 64 (default 16)
   --seed S             base seed of the random methods (default 1)
-  --csv                print light,surface,method,samples,x,y,z,r,g,b rows
+  --csv                print light,surface,method,samples,x,y,z,r,g,b,pdf,strata,evals rows
   --light-file PATH    use this light instead of A, D65, F11 (brace, CSV/TSV or JSON)
   --surface-file PATH  use this reflectance instead of the six patches
   --normalize MODE     scale each light first: none (default, as Appendix 2),

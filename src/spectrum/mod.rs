@@ -19,6 +19,8 @@
 pub mod data;
 mod grid;
 pub(crate) mod interp;
+#[cfg(test)]
+mod interp_tests;
 pub mod observer;
 pub(crate) mod range;
 mod tabulated;

@@ -5,7 +5,7 @@
 //! The charted methods are [`curves`]: the assignment's random and hero,
 //! hero with each strata and with each pdf, centre and box buckets, and the
 //! reference as a single point. Random and hero run
-//! n = 1, 2, 4, … [`MAX_N`]; buckets every M up to 64. `examples/chart.rs`
+//! n = 1, 2, 4, … [`MAX_N`]; buckets every M up to 64. `examples/chart/main.rs`
 //! draws the points; a method added to [`curves`] appears there unchanged.
 //!
 //! ```

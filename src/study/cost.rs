@@ -121,7 +121,8 @@ fn median_ns(mut f: impl FnMut()) -> f64 {
     f();
     f();
     // The calibration sets only how long each timing lasts, not what it
-    // reports: another estimate of `once` gives the same figures, noisier.
+    // reports: another estimate of `once` or `repeats` gives the same
+    // figures, noisier (so mutants of these two lines are equivalent).
     let once = start.elapsed().as_secs_f64() / 2.0;
     let repeats = ((2e-4 / once.max(1e-9)).ceil() as usize).clamp(1, 1 << 20);
     let times: Vec<f64> = (0..7)

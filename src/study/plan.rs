@@ -354,7 +354,14 @@ mod tests {
         let cell = format!("{} × {}", lights[0].name, surfaces[0].name);
         assert_eq!(
             scene.monte_carlo_verdict(config, &request).unwrap(),
-            Verdict::Above { worst: lower, cell }
+            Verdict::Above { worst: lower, cell: cell.clone() }
         );
+        // A budget exactly at the screen's lower bound passes the screen;
+        // the full run then rejects the cell with its own RMS.
+        let at = Request { budget: lower, ..Request::default() };
+        match scene.monte_carlo_verdict(config, &at).unwrap() {
+            Verdict::Above { worst, cell: c } => assert!(worst != lower && c == cell),
+            other => panic!("expected the full run to reject the cell, got {other:?}"),
+        }
     }
 }
