@@ -15,8 +15,8 @@ use std::process::ExitCode;
 use common::{fail, finish};
 use speclab::Role;
 use speclab::color::{Display, Exposure, GamutMap};
-use speclab::sampling::hero;
-use speclab::study::compare::{self, Settings};
+use speclab::study::StudyError;
+use speclab::study::compare::{self, CompareOptions};
 use speclab::study::report;
 use speclab::study::scene::{Choice, Named};
 
@@ -32,14 +32,14 @@ usage: compare [options]
   --normalize none|power|luminance   scale the light first (default none)
   --white-balance                    Bradford-adapt the light's white to D65's before sRGB
   --pdf uniform|visible|light|balanced           random and hero wavelengths' density (default uniform)
-  --strata independent|jitter|kronecker          how their primary numbers are spread (default independent)
+  --strata none|jitter|kronecker          how their primary numbers are spread (default none)
   --gamut clip|chroma    how terminal swatches show out-of-gamut colours (default chroma: keep
                          hue and luminance, desaturate); the numbers stay unclamped";
 
 struct Args {
     light: Choice,
     surface: Choice,
-    settings: Settings,
+    settings: CompareOptions,
     gamut: GamutMap,
 }
 
@@ -48,7 +48,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut a = Args {
         light: Choice::Name("D65".into()),
         surface: Choice::Name("A1".into()),
-        settings: Settings::default(),
+        settings: CompareOptions::default(),
         gamut: GamutMap::default(),
     };
     let s = &mut a.settings;
@@ -59,26 +59,16 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("light-file") => a.light = Choice::File(parser.value()?.into()),
             Long("surface") => a.surface = Choice::Name(parser.value()?.string()?),
             Long("surface-file") => a.surface = Choice::File(parser.value()?.into()),
-            Long("n") => s.n = parser.value()?.parse()?,
-            Long("m") => s.m = parser.value()?.parse()?,
-            Long("k") => {
-                s.k = parser.value()?.parse()?;
-                if !hero::WIDTHS.contains(&s.k) {
-                    return Err(format!(
-                        "hero width {} is not compiled: expected one of {:?}",
-                        s.k,
-                        hero::WIDTHS
-                    )
-                    .into());
-                }
-            }
+            Long("n") => s.n = parser.value()?.parse_with(|v| common::count("samples", v))?,
+            Long("m") => s.m = parser.value()?.parse_with(common::buckets)?,
+            Long("k") => s.k = parser.value()?.parse_with(common::hero_width)?,
             Long("seed") => s.seed = parser.value()?.parse()?,
-            Long("trials") => s.trials = parser.value()?.parse()?,
-            Long("normalize") => s.viewing.normalize = common::normalization(&parser.value()?.string()?)?,
+            Long("trials") => s.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
+            Long("normalize") => s.viewing.normalize = parser.value()?.parse()?,
             Long("white-balance") => s.viewing.white_balance = true,
-            Long("pdf") => s.sampling.pdf = common::pdf(&parser.value()?.string()?)?,
-            Long("strata") => s.sampling.strata = common::strata(&parser.value()?.string()?)?,
-            Long("gamut") => a.gamut = common::gamut(&parser.value()?.string()?)?,
+            Long("pdf") => s.sampling.pdf = parser.value()?.parse()?,
+            Long("strata") => s.sampling.strata = parser.value()?.parse()?,
+            Long("gamut") => a.gamut = parser.value()?.parse()?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);
@@ -89,7 +79,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     Ok(a)
 }
 
-fn run(args: &Args) -> Result<(Named, Named, Vec<compare::Line>), speclab::Error> {
+fn run(args: &Args) -> Result<(Named, Named, Vec<compare::Line>), StudyError> {
     let light = args.light.resolve(Role::Light)?;
     let light = Named::new(light.name, args.settings.viewing.light(&light.spectrum)?);
     let surface = args.surface.resolve(Role::Reflectance)?;
@@ -105,7 +95,7 @@ fn main() -> ExitCode {
     match run(&args) {
         Ok((light, surface, lines)) => {
             let white = args.settings.viewing.white(&light.spectrum);
-            let swatches = common::colour().then(|| Display::new(Exposure::fit_white(white), args.gamut));
+            let swatches = common::color().then(|| Display::new(Exposure::fit_white(white), args.gamut));
             let out = &mut io::stdout().lock();
             let written =
                 report::compare_table(out, &light.name, &surface.name, &args.settings, &lines, swatches);

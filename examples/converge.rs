@@ -17,6 +17,7 @@ use std::process::ExitCode;
 use common::{fail, finish};
 use speclab::Role;
 use speclab::sampling::strata::Strata;
+use speclab::study::StudyError;
 use speclab::study::sampling::{Pdf, Sampling};
 use speclab::study::scene::{self, Choice};
 use speclab::study::{convergence, report};
@@ -34,7 +35,7 @@ usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--all] 
                   and the count from which it stays below (implies --all, and every pdf and strata
                   unless --pdf or --strata is given)
   --pdf PDF       random and hero wavelengths' density: uniform (default), visible, light, balanced, all
-  --strata S      how their primary numbers are spread: independent (default), jitter, kronecker, all";
+  --strata S      how their primary numbers are spread: none (default), jitter, kronecker, all";
 
 struct Args {
     light: Choice,
@@ -68,18 +69,26 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("surface") => a.surface = Choice::Name(parser.value()?.string()?),
             Long("light-file") => a.light = Choice::File(parser.value()?.into()),
             Long("surface-file") => a.surface = Choice::File(parser.value()?.into()),
-            Long("trials") => a.trials = parser.value()?.parse()?,
+            Long("trials") => a.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
             Long("seed") => a.seed = parser.value()?.parse()?,
             Long("all") => a.all = true,
             Long("csv") => a.csv = true,
             Long("summary") => a.summary = true,
             Long("pdf") => {
                 let v = parser.value()?.string()?;
-                a.pdfs = Some(if v == "all" { Pdf::ALL.to_vec() } else { vec![common::pdf(&v)?] });
+                a.pdfs = Some(if v == "all" {
+                    Pdf::ALL.to_vec()
+                } else {
+                    vec![v.parse().map_err(|e: speclab::Error| e.to_string())?]
+                });
             }
             Long("strata") => {
                 let v = parser.value()?.string()?;
-                a.strata = Some(if v == "all" { Strata::ALL.to_vec() } else { vec![common::strata(&v)?] });
+                a.strata = Some(if v == "all" {
+                    Strata::ALL.to_vec()
+                } else {
+                    vec![v.parse().map_err(|e: speclab::Error| e.to_string())?]
+                });
             }
             Short('h') | Long("help") => {
                 println!("{USAGE}");
@@ -97,14 +106,12 @@ fn samplings(args: &Args) -> Vec<Sampling> {
     let every = args.summary && args.pdfs.is_none() && args.strata.is_none();
     let pdfs =
         args.pdfs.clone().unwrap_or_else(|| if every { Pdf::ALL.to_vec() } else { vec![Pdf::Uniform] });
-    let strata = args
-        .strata
-        .clone()
-        .unwrap_or_else(|| if every { Strata::ALL.to_vec() } else { vec![Strata::Independent] });
+    let strata =
+        args.strata.clone().unwrap_or_else(|| if every { Strata::ALL.to_vec() } else { vec![Strata::None] });
     pdfs.iter().flat_map(|&pdf| strata.iter().map(move |&strata| Sampling { pdf, strata })).collect()
 }
 
-fn rows(args: &Args) -> Result<Vec<convergence::Row>, speclab::Error> {
+fn rows(args: &Args) -> Result<Vec<convergence::ConvergenceRow>, StudyError> {
     let (lights, surfaces) = if args.all {
         (scene::builtin_lights(), scene::builtin_surfaces())
     } else {

@@ -15,7 +15,8 @@ use std::process::ExitCode;
 use common::{fail, finish};
 use speclab::Role;
 use speclab::color::GamutMap;
-use speclab::study::grid::Grid;
+use speclab::study::StudyError;
+use speclab::study::grid::GridOptions;
 use speclab::study::remarks::Viewing;
 use speclab::study::report;
 use speclab::study::scene::{Choice, Named};
@@ -23,7 +24,7 @@ use speclab::study::scene::{Choice, Named};
 const USAGE: &str = "\
 usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-file PATH]
             [--normalize none|power|luminance] [--white-balance]
-            [--pdf uniform|visible|light|balanced] [--strata independent|jitter|kronecker]
+            [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
             [--gamut clip|chroma]
   --n N                samples for random and hero (default 100)
   --m M                buckets for regular sampling, 1 to 64 (default 16)
@@ -35,12 +36,12 @@ usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-fi
                        power (mean power 1 over 380-730 nm), luminance (white Y = 100)
   --white-balance      Bradford-adapt each light's white to D65's before sRGB
   --pdf PDF            random and hero wavelengths' density (default uniform, as the assignment)
-  --strata STRATA      how their primary numbers are spread (default independent)
+  --strata STRATA      how their primary numbers are spread (default none)
   --gamut MAP          how terminal swatches show out-of-gamut colours: clip per channel,
                        or chroma (default: keep hue and luminance, desaturate); numbers stay unclamped";
 
 struct Args {
-    grid: Grid,
+    grid: GridOptions,
     csv: bool,
     lights: Vec<Choice>,
     surfaces: Vec<Choice>,
@@ -52,7 +53,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     use lexopt::prelude::*;
     let names = |names: &[&str]| names.iter().map(|n| Choice::Name(n.to_string())).collect();
     let mut args = Args {
-        grid: Grid::default(),
+        grid: GridOptions::default(),
         csv: false,
         lights: names(&["A", "D65", "F11"]),
         surfaces: names(&["E2", "F4", "G4", "H4", "J4", "A1"]),
@@ -62,17 +63,17 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
-            Long("n") => args.grid.n = parser.value()?.parse()?,
-            Long("m") => args.grid.m = parser.value()?.parse()?,
+            Long("n") => args.grid.n = parser.value()?.parse_with(|v| common::count("samples", v))?,
+            Long("m") => args.grid.m = parser.value()?.parse_with(common::buckets)?,
             Long("seed") => args.grid.seed = parser.value()?.parse()?,
             Long("csv") => args.csv = true,
             Long("light-file") => args.lights = vec![Choice::File(parser.value()?.into())],
             Long("surface-file") => args.surfaces = vec![Choice::File(parser.value()?.into())],
-            Long("normalize") => args.viewing.normalize = common::normalization(&parser.value()?.string()?)?,
+            Long("normalize") => args.viewing.normalize = parser.value()?.parse()?,
             Long("white-balance") => args.viewing.white_balance = true,
-            Long("pdf") => args.grid.sampling.pdf = common::pdf(&parser.value()?.string()?)?,
-            Long("strata") => args.grid.sampling.strata = common::strata(&parser.value()?.string()?)?,
-            Long("gamut") => args.gamut = common::gamut(&parser.value()?.string()?)?,
+            Long("pdf") => args.grid.sampling.pdf = parser.value()?.parse()?,
+            Long("strata") => args.grid.sampling.strata = parser.value()?.parse()?,
+            Long("gamut") => args.gamut = parser.value()?.parse()?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);
@@ -84,7 +85,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
 }
 
 /// The chosen lights (normalised) and surfaces.
-fn scene(args: &Args) -> Result<(Vec<Named>, Vec<Named>), speclab::Error> {
+fn scene(args: &Args) -> Result<(Vec<Named>, Vec<Named>), StudyError> {
     let mut lights = Vec::new();
     for choice in &args.lights {
         let light = choice.resolve(Role::Light)?;
@@ -111,7 +112,7 @@ fn main() -> ExitCode {
     let written = if args.csv {
         report::grid_csv(out, &rows, &args.viewing)
     } else {
-        let swatches = common::colour().then_some(args.gamut);
+        let swatches = common::color().then_some(args.gamut);
         report::grid_table(out, &args.grid, &args.viewing, &rows, swatches)
     };
     finish("grid", written)

@@ -5,7 +5,7 @@
 //! ```text
 //! cargo run --release --example plan -- --light F11 --surface all
 //! cargo run --release --example plan -- --light all --surface all --budget 0.5 --unbiased
-//! cargo run --release --example plan -- --light-file lamp.csv --surface A1 --surface-file paint.json
+//! cargo run --release --example plan -- --light-file examples/build-data/data/led.csv --surface A1 --surface-file examples/build-data/data/leaf.json
 //! ```
 
 mod common;
@@ -15,6 +15,7 @@ use std::process::ExitCode;
 
 use common::{fail, finish};
 use speclab::Role;
+use speclab::study::StudyError;
 use speclab::study::plan::{self, Request};
 use speclab::study::report;
 use speclab::study::scene::{self, Choice, Named};
@@ -59,7 +60,9 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("surface-file") => args.surfaces.push(Choice::File(parser.value()?.into())),
             Long("budget") => args.request.budget = parser.value()?.parse()?,
             Long("unbiased") => args.request.allow_bias = false,
-            Long("trials") => args.request.trials = parser.value()?.parse()?,
+            Long("trials") => {
+                args.request.trials = parser.value()?.parse_with(|v| common::count("trials", v))?
+            }
             Long("seed") => args.request.seed = parser.value()?.parse()?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
@@ -71,7 +74,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     Ok(args)
 }
 
-fn resolve(choices: &[Choice], role: Role) -> Result<Vec<Named>, speclab::Error> {
+fn resolve(choices: &[Choice], role: Role) -> Result<Vec<Named>, StudyError> {
     choices.iter().map(|c| c.resolve(role)).collect()
 }
 

@@ -23,7 +23,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use common::fail;
-use speclab::study::swatches::{self, Settings};
+use speclab::study::swatches::{self, SwatchOptions};
 use speclab::study::{scene, sheet};
 
 const USAGE: &str = "\
@@ -37,22 +37,22 @@ usage: swatches [--n N] [--m M] [--seed S] [--white-balance] [--gamut clip|chrom
   --out PATH       where to write the PNG (default swatches.png)";
 
 struct Args {
-    settings: Settings,
+    settings: SwatchOptions,
     out: PathBuf,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
     use lexopt::prelude::*;
-    let mut args = Args { settings: Settings::default(), out: PathBuf::from("swatches.png") };
+    let mut args = Args { settings: SwatchOptions::default(), out: PathBuf::from("swatches.png") };
     let s = &mut args.settings;
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
-            Long("n") => s.n = parser.value()?.parse()?,
-            Long("m") => s.m = parser.value()?.parse()?,
+            Long("n") => s.n = parser.value()?.parse_with(|v| common::count("samples", v))?,
+            Long("m") => s.m = parser.value()?.parse_with(common::buckets)?,
             Long("seed") => s.seed = parser.value()?.parse()?,
             Long("white-balance") => s.white_balance = true,
-            Long("gamut") => s.gamut = common::gamut(&parser.value()?.string()?)?,
+            Long("gamut") => s.gamut = parser.value()?.parse()?,
             Long("out") => args.out = parser.value()?.into(),
             Short('h') | Long("help") => {
                 println!("{USAGE}");

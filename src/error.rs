@@ -1,13 +1,17 @@
-//! The library's error type.
+//! The library's error type, at the bottom floor: it depends on nothing in
+//! the crate, so every floor can return it.
 //!
 //! Every error says where it applies: text errors carry the origin (file
-//! path or `<string>`), line and column; errors in in-memory samples carry
-//! the index and the field; other variants carry the values that were out of
-//! range. This file depends on `std` only: `build.rs` includes it.
+//! path or `<string>`), line and column ([`ParseError`], with its
+//! [`Position`] and [`ParseErrorKind`]); errors in in-memory samples carry
+//! the index and the field ([`SampleError`]); other variants carry the
+//! values that were out of range. Text positions and kinds are
+//! `speclab_tables`' own, re-exported here: build scripts and run-time
+//! loading report the same errors.
 //!
 //! ```
-//! use speclab::{Role, TabulatedSpectrum};
-//! let err = TabulatedSpectrum::parse("{380, 1}, {370, 2}", "<string>", Role::Light).unwrap_err();
+//! use speclab::{io::Load, Role, TabulatedSpectrum};
+//! let err = Load::new(Role::Light).text("{380, 1}, {370, 2}", "<string>").unwrap_err();
 //! assert_eq!(err.to_string(), "<string>:1:11: expected a wavelength greater than 380 nm, found 370 nm");
 //! let err = TabulatedSpectrum::new(vec![380.0, 370.0], vec![1.0, 2.0], Role::Light).unwrap_err();
 //! assert_eq!(err.to_string(), "lambda[1]: expected a wavelength greater than 380 nm, found 370 nm");
@@ -16,8 +20,8 @@
 use std::fmt;
 use std::path::PathBuf;
 
-use crate::io::text::ParseError;
-use crate::spectrum::validate::SampleError;
+pub use speclab_tables::error::{ParseError, ParseErrorKind, Position, ReadError};
+pub use speclab_tables::validate::{Field, Invalid, SampleError};
 
 /// Errors of the public API.
 #[derive(Debug)]
@@ -57,38 +61,30 @@ pub enum Error {
         pdf: f64,
     },
     /// A hero width with no compiled instance of `HeroSample<K>`.
-    UnsupportedHeroWidth {
+    HeroWidth {
         /// The width asked for.
         k: usize,
+        /// The compiled widths.
+        widths: &'static [usize],
     },
-    /// A bucket count with no compiled instance of `RegularSpectrum<M>`.
-    UnsupportedBuckets {
+    /// A bucket count outside what the bucket types support.
+    BucketCount {
         /// The count asked for.
         m: usize,
-        /// The largest compiled count (the smallest is 1).
+        /// The largest count supported (the smallest is 1).
         max: usize,
-    },
-    /// A built-in spectrum name that does not exist.
-    UnknownSpectrum {
-        /// The name asked for.
-        name: String,
-        /// The names that exist.
-        expected: &'static str,
-    },
-    /// A scene with no light or no surface.
-    EmptyScene,
-    /// A ΔE00 budget that is not finite and positive.
-    Budget {
-        /// The budget given.
-        value: f64,
     },
     /// A light with no power where the observer sees, within 380–730 nm: no
     /// wavelength pdf can follow it.
     DarkLight,
-    /// A name for generated code that is not a Rust identifier.
-    Identifier {
+    /// A name that names none of the choices (a built-in light, a pdf, …).
+    UnknownName {
+        /// What was looked up, e.g. `a built-in light`.
+        what: &'static str,
+        /// The names that exist, e.g. `["A", "D65", "F11"]`.
+        expected: &'static [&'static str],
         /// The name given.
-        name: String,
+        found: String,
     },
 }
 
@@ -107,22 +103,26 @@ impl fmt::Display for Error {
                 "wavelength {index}: expected a finite wavelength with a finite non-negative pdf, \
                  found {lambda} nm with pdf {pdf}"
             ),
-            Error::UnsupportedHeroWidth { k } => {
-                write!(f, "expected a hero width of 1, 2, 3, 4, 8 or 16 wavelengths, found {k}")
+            Error::HeroWidth { k, widths } => {
+                write!(f, "expected a hero width of {} wavelengths, found {k}", or_list(widths.iter()))
             }
-            Error::UnsupportedBuckets { m, max } => {
-                write!(f, "expected a bucket count from 1 to {max}, found {m}")
-            }
-            Error::UnknownSpectrum { name, expected } => write!(f, "expected {expected}, found {name:?}"),
-            Error::Identifier { name } => write!(f, "expected a Rust identifier, found {name:?}"),
-            Error::EmptyScene => {
-                write!(f, "expected a scene of at least one light and one surface, found none")
-            }
-            Error::Budget { value } => write!(f, "expected a finite positive ΔE00 budget, found {value}"),
+            Error::BucketCount { m, max } => write!(f, "expected a bucket count from 1 to {max}, found {m}"),
             Error::DarkLight => {
                 write!(f, "expected a light with power where the observer sees (380-730 nm), found none")
             }
+            Error::UnknownName { what, expected, found } => {
+                write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))
+            }
         }
+    }
+}
+
+/// `1, 2 or 3`.
+fn or_list(items: impl Iterator<Item = impl fmt::Display>) -> String {
+    let names: Vec<String> = items.map(|i| i.to_string()).collect();
+    match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => names.concat(),
     }
 }
 
@@ -148,3 +148,41 @@ impl From<SampleError> for Error {
         Error::Sample(e)
     }
 }
+
+impl From<ReadError> for Error {
+    fn from(e: ReadError) -> Self {
+        match e {
+            ReadError::Io { path, source } => Error::Io { path, source },
+            ReadError::TooLarge { origin, limit } => Error::TooLarge { origin, limit },
+        }
+    }
+}
+
+/// `Display` and `FromStr` (any case) for an enum of named choices:
+/// `named_choices!(Light, "a built-in light": A => "A", D65 => "D65")`. An
+/// unknown name is an [`Error::UnknownName`] listing the names.
+macro_rules! named_choices {
+    ($ty:ident, $what:literal: $($variant:ident => $name:literal),+ $(,)?) => {
+        impl ::std::fmt::Display for $ty {
+            /// The name used on command lines, in tables and in CSV.
+            fn fmt(&self, f: &mut ::std::fmt::Formatter<'_>) -> ::std::fmt::Result {
+                f.write_str(match self { $($ty::$variant => $name),+ })
+            }
+        }
+        impl ::std::str::FromStr for $ty {
+            type Err = $crate::error::Error;
+            /// The choice with this name, in any case.
+            fn from_str(s: &str) -> ::std::result::Result<Self, Self::Err> {
+                $(if s.eq_ignore_ascii_case($name) {
+                    return Ok($ty::$variant);
+                })+
+                Err($crate::error::Error::UnknownName {
+                    what: $what,
+                    expected: &[$($name),+],
+                    found: s.to_string(),
+                })
+            }
+        }
+    };
+}
+pub(crate) use named_choices;

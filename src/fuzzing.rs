@@ -4,7 +4,8 @@
 
 use crate::io::{Format, Load, brace, columns, json};
 use crate::sampling::reference;
-use crate::{Role, data};
+use crate::spectrum::Role;
+use crate::spectrum::data::lights;
 
 /// Feeds `data` to every run-time parser and evaluates whatever loads.
 /// Panics only on a bug: a parser panicking, or a loaded spectrum that
@@ -20,7 +21,7 @@ pub fn parsers(data: &[u8]) {
         if let Ok(s) = Load::new(role).text(text, "<fuzz>") {
             assert!(s.eval(555.0).is_finite(), "loaded spectrum is not finite at 555 nm");
             assert!(s.integral(380.0, 730.0).is_finite(), "loaded spectrum has a non-finite integral");
-            assert!(reference::xyz(&data::D65, &s).is_finite(), "non-finite reference");
+            assert!(reference::xyz(&lights::D65, &s).is_finite(), "non-finite reference");
         }
     }
 }

@@ -12,20 +12,25 @@
 //! - the values at them: [`SampledSpectrum<K>`] or the buckets' values,
 //!   turned into [`Xyz`] and [`LinearSrgb`] ([`color`]).
 //!
-//! Spectra are read by [`io`] at run time, or turned into static data at
-//! compile time by [`codegen`] (the built-in data, [`data`], is made so).
-//! The accuracy study ([`study`]: trials, ΔE00, the comparison grid) is
-//! behind the default feature `study`; a renderer can leave it out with
-//! `default-features = false`, which leaves `rand` as the only dependency.
+//! Floors, each using only those below it: [`error`] and [`spectrum`] →
+//! [`color`] → [`sampling`] → [`io`] → `study` (`ARCHITECTURE.md`;
+//! `tests/floors.rs` checks the `use` lines). Spectra are read by [`io`] at
+//! run time, or turned into static data at compile time by the
+//! `speclab-tables` crate (the built-in data, [`data`], is made so). The
+//! accuracy study (`speclab::study`: trials, ΔE00, the comparison grid) is behind
+//! the default feature `study`; a renderer can leave it out with
+//! `default-features = false`, which leaves `rand` (re-exported as
+//! [`rand`], the version the API names) and `speclab-tables` as the only
+//! dependencies.
 //!
 //! A renderer's inner loop, per sample:
 //!
 //! ```
-//! use speclab::{data, HeroSample, SampledSpectrum, Xyz};
+//! use speclab::{data::{lights, patches}, HeroSample, SampledSpectrum, Xyz};
 //! let mut pixel = Xyz::ZERO;
 //! for i in 0..64 {
 //!     let h = HeroSample::<4>::new((i as f64 + 0.5) / 64.0);
-//!     let (le, albedo) = (data::D65.sample(&h), data::F4.sample(&h));
+//!     let (le, albedo) = (lights::D65.sample(&h), patches::F4.sample(&h));
 //!     let (mut beta, mut l) = (SampledSpectrum::splat(1.0), SampledSpectrum::zero());
 //!     for _bounce in 0..2 {
 //!         beta *= albedo; // reflect off the patch
@@ -43,7 +48,6 @@
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
-pub mod codegen;
 pub mod color;
 pub mod error;
 #[doc(hidden)]
@@ -56,5 +60,8 @@ pub mod study;
 
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;
-pub use sampling::{BoxAverage, Centre, HeroSample, RegularSpectrum, SampledSpectrum};
-pub use spectrum::{Interpolation, LAMBDA_MAX, LAMBDA_MIN, Role, TabulatedSpectrum, WIDTH, data};
+pub use rand;
+pub use sampling::{BoxAverage, Center, HeroSample, RegularSpectrum};
+pub use spectrum::{
+    Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Role, SampledSpectrum, TabulatedSpectrum, data,
+};

@@ -53,13 +53,15 @@ fn per_sample_path_does_not_allocate() {
     let uneven =
         TabulatedSpectrum::new(vec![380.0, 400.0, 550.0, 730.0], vec![0.2, 0.4, 0.9, 0.1], Role::Reflectance)
             .expect("valid");
-    let (lb, sb) =
-        (RegularSpectrum::<16, BoxAverage>::box_average(&data::F11), RegularSpectrum::box_average(&uneven));
+    let (lb, sb) = (
+        RegularSpectrum::<16, BoxAverage>::box_average(&data::lights::F11),
+        RegularSpectrum::box_average(&uneven),
+    );
     let count = allocations(|| {
         let mut pixel = speclab::Xyz::ZERO;
         for i in 0..1000 {
             let mut h = HeroSample::<4>::new(black_box(f64::from(i) * 0.618));
-            let (le, albedo) = (data::F11.sample(&h), uneven.sample(&h));
+            let (le, albedo) = (data::lights::F11.sample(&h), uneven.sample(&h));
             let mut beta = SampledSpectrum::splat(1.0);
             let mut l = SampledSpectrum::zero();
             beta *= albedo;
@@ -69,8 +71,8 @@ fn per_sample_path_does_not_allocate() {
             pixel += h.to_xyz(l);
             h.terminate_secondary();
             pixel += h.to_xyz(le);
-            let own = HeroSample::with_pdf(*h.lambda(), [0.01; 4]).expect("valid");
-            pixel += own.to_xyz(data::A.sample(&own));
+            let own = HeroSample::from_wavelengths(*h.lambda(), [0.01; 4]).expect("valid");
+            pixel += own.to_xyz(data::lights::A.sample(&own));
             pixel += (lb * sb).to_xyz();
         }
         black_box(pixel);
@@ -85,17 +87,19 @@ fn pdfs_and_strata_do_not_allocate() {
     use rand::SeedableRng;
     use speclab::sampling::pdf::{LightPdf, Visible};
     use speclab::sampling::strata::Strata;
-    let (light, balanced) =
-        (LightPdf::light(&data::F11).expect("bright"), LightPdf::balanced(&data::A).expect("bright"));
+    let (light, balanced) = (
+        LightPdf::light(&data::lights::F11).expect("bright"),
+        LightPdf::balanced(&data::lights::A).expect("bright"),
+    );
     let mut rng = rand::rngs::StdRng::seed_from_u64(5);
     let count = allocations(|| {
         let mut pixel = speclab::Xyz::ZERO;
         for strata in Strata::ALL {
             for u in strata.points(64, 4, &mut rng) {
                 let h = HeroSample::<4>::from_pdf(u, &light);
-                pixel += h.to_xyz(data::F11.sample(&h) * data::G4.sample(&h));
+                pixel += h.to_xyz(data::lights::F11.sample(&h) * data::patches::G4.sample(&h));
                 let h = HeroSample::<4>::from_pdf(u, &Visible);
-                pixel += h.to_xyz(data::A.sample(&h));
+                pixel += h.to_xyz(data::lights::A.sample(&h));
                 pixel += HeroSample::<1>::from_pdf(u, &balanced).to_xyz(SampledSpectrum::splat(1.0));
             }
         }
@@ -109,17 +113,20 @@ fn pdfs_and_strata_do_not_allocate() {
 /// overshoot [0, 1], which these patches' do not).
 #[test]
 fn bucketing_reference_and_batch_do_not_allocate() {
-    let prepared =
-        speclab::sampling::PreparedLight::for_grid(&data::D65, data::G4.lambda(), data::G4.interpolation())
-            .expect("valid grid");
+    let prepared = speclab::sampling::PreparedLight::for_grid(
+        &data::lights::D65,
+        data::patches::G4.lambda(),
+        data::patches::G4.interpolation(),
+    )
+    .expect("valid grid");
     let samples: Vec<f64> =
         speclab::data::Patch::ALL.iter().flat_map(|p| p.spectrum().values().to_vec()).collect();
     let mut out = [speclab::Xyz::ZERO; 6];
     let count = allocations(|| {
-        black_box(RegularSpectrum::<16, speclab::Centre>::centre(&data::F11));
-        black_box(RegularSpectrum::<16, BoxAverage>::box_average(&data::F11));
-        black_box(speclab::sampling::reference::xyz(&data::F11, &data::H4));
-        black_box(prepared.xyz(&data::G4));
+        black_box(RegularSpectrum::<16, speclab::Center>::center(&data::lights::F11));
+        black_box(RegularSpectrum::<16, BoxAverage>::box_average(&data::lights::F11));
+        black_box(speclab::sampling::reference::xyz(&data::lights::F11, &data::patches::H4));
+        black_box(prepared.xyz(&data::patches::G4));
         prepared.batch(&samples, &mut out).expect("valid");
     });
     assert_eq!(count, 0, "allocated {count} times");
@@ -130,9 +137,9 @@ fn bucketing_reference_and_batch_do_not_allocate() {
 #[test]
 fn display_pipeline_does_not_allocate() {
     use speclab::color::display::{Display, Exposure, GamutMap};
-    let white = speclab::sampling::reference::white(&data::F11);
-    let colours =
-        [white, speclab::sampling::reference::xyz(&data::F11, &data::G4)].map(|x| x.to_linear_srgb());
+    let white = speclab::sampling::reference::white(&data::lights::F11);
+    let colours = [white, speclab::sampling::reference::xyz(&data::lights::F11, &data::patches::G4)]
+        .map(|x| x.to_linear_srgb());
     let count = allocations(|| {
         for gamut in GamutMap::ALL {
             for exposure in [Exposure::for_white(white), Exposure::fit_white(white), Exposure::new(1e-3)] {

@@ -29,7 +29,7 @@ fn sharma_wu_dalal_pairs() {
 
 #[test]
 fn lab_of_white_and_grey() {
-    let white = reference::white(&data::F11);
+    let white = reference::white(&data::lights::F11);
     assert_eq!(lab(white, white), [100.0, 0.0, 0.0]);
     // 18 % grey: L* = 116·0.18^(1/3) − 16 ≈ 49.496.
     let grey = lab(white * 0.18, white);
@@ -41,7 +41,8 @@ fn lab_of_white_and_grey() {
 
 #[test]
 fn lab_is_independent_of_light_scale() {
-    let (xyz, white) = (reference::xyz(&data::F11, &data::G4), reference::white(&data::F11));
+    let (xyz, white) =
+        (reference::xyz(&data::lights::F11, &data::patches::G4), reference::white(&data::lights::F11));
     let scaled = lab(xyz * 0.01, white * 0.01);
     let plain = lab(xyz, white);
     for c in 0..3 {

@@ -10,7 +10,7 @@ use rand::SeedableRng;
 use rand::rngs::StdRng;
 use speclab::sampling::{hero, reference};
 use speclab::spectrum::validate::MAX_VALUE;
-use speclab::{BoxAverage, Centre, Error, RegularSpectrum, Role, TabulatedSpectrum, Xyz};
+use speclab::{BoxAverage, Center, Error, RegularSpectrum, Role, TabulatedSpectrum, Xyz};
 
 /// Light power across the scales that matter: zero, subnormal, tiny,
 /// ordinary, huge up to the limit.
@@ -51,7 +51,7 @@ proptest! {
         let mut rng = StdRng::seed_from_u64(seed);
         prop_assert!(finite(hero::estimate::<1, _>(&l, &s, n, &mut rng)));
         prop_assert!(finite(hero::estimate::<4, _>(&l, &s, n, &mut rng)));
-        let centre = RegularSpectrum::<16, Centre>::centre(&l) * RegularSpectrum::centre(&s);
+        let centre = RegularSpectrum::<16, Center>::center(&l) * RegularSpectrum::center(&s);
         let boxed = RegularSpectrum::<16, BoxAverage>::box_average(&l) * RegularSpectrum::box_average(&s);
         prop_assert!(finite(centre.to_xyz()) && finite(boxed.to_xyz()));
         prop_assert!(l.integral(380.0, 730.0).is_finite() && l.mean(380.0, 730.0).is_finite());
@@ -101,13 +101,13 @@ fn study(l: &TabulatedSpectrum, s: &TabulatedSpectrum, seed: u64) -> Result<(), 
 #[cfg(feature = "study")]
 #[test]
 fn nearly_zero_white_component() {
-    use speclab::sampling::regular::{self, Rule};
+    use speclab::sampling::buckets::{BucketRule, Buckets};
     use speclab::study::perceptual;
     let l = spectrum(vec![0.0, 0.0, 0.0, 5.562_684_646_268_003e-309, 1e100], Role::Light).expect("valid");
     let s = spectrum(vec![0.0, 0.0, 0.0, 0.516_878_024_304_750_5], Role::Reflectance).expect("valid");
     let (exact, white) = (reference::xyz(&l, &s), reference::white(&l));
     assert!(white.z > 0.0 && white.z < 1e-300, "{white:?}");
-    let boxed = regular::xyz_dyn(1, Rule::BoxAverage, &l, &s).expect("M = 1");
+    let boxed = Buckets::new(1, BucketRule::BoxAverage).expect("M = 1").xyz(&l, &s);
     assert!(boxed.z / white.z == f64::INFINITY, "the ratio overflows");
     let de = perceptual::delta_e00(boxed, exact, white);
     assert!(de.is_finite() && de > 50.0, "finite and far off: {de}");

@@ -101,6 +101,18 @@ fn support_must_cover_the_range() {
     assert_eq!(partial.eval(390.0), 0.0);
 }
 
+/// A light file with no power in 380–730 nm is refused where its first
+/// value is written: every colour under it would be black and every ratio
+/// to its white undefined. A black surface is a valid reflectance.
+#[test]
+fn black_lights_are_refused() {
+    let none = "expected a light with power within 380-730 nm, found none";
+    assert_eq!(error("380,0\n500,0\n730,0", Role::Light), format!("in.txt:1:5: {none}"));
+    assert_eq!(error("# lamp\n380 0\n730 0\n760 5\n780 5", Role::Light), format!("in.txt:2:5: {none}"));
+    assert!(Load::new(Role::Light).text("380 0\n729 0\n730 1e-9", "dim.txt").is_ok(), "dim is not black");
+    assert!(Load::new(Role::Reflectance).text("380 0\n500 0\n600 0\n730 0", "black.txt").is_ok());
+}
+
 #[test]
 fn micrometres_are_caught_or_converted() {
     assert!(
@@ -194,7 +206,7 @@ fn endless_stream_is_refused() {
     assert_eq!(small.len(), 10);
     assert!(matches!(
         read::text(std::io::repeat(b' ').take(11), "<stream>", 10),
-        Err(Error::TooLarge { .. })
+        Err(speclab::error::ReadError::TooLarge { .. })
     ));
 }
 

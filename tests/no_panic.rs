@@ -7,7 +7,7 @@ use std::num::NonZeroUsize;
 use proptest::prelude::*;
 use rand::SeedableRng;
 use speclab::io::{Format, Load, brace, columns, json, read};
-use speclab::sampling::regular::{self, Rule};
+use speclab::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
 use speclab::sampling::{hero, reference};
 use speclab::{BoxAverage, HeroSample, Interpolation, RegularSpectrum, Role, TabulatedSpectrum, data};
 
@@ -58,7 +58,6 @@ proptest! {
         let _ = columns::parse_columns(&text, "<string>");
         let _ = json::parse_json(&text, "<string>");
         let _ = read::samples(&text, "<string>", role, role.interpolation(), None);
-        let _ = TabulatedSpectrum::parse(&text, "<string>", role);
         for format in [Format::Brace, Format::Json, Format::Columns] {
             let _ = Load::new(role).with_format(format).text(&text, "<string>");
         }
@@ -82,8 +81,8 @@ proptest! {
                 let _ = s.eval(x);
             }
             let _ = RegularSpectrum::<7, BoxAverage>::box_average(&s).to_xyz();
-            let _ = RegularSpectrum::<7>::centre(&s).to_xyz();
-            let _ = reference::xyz(&data::D65, &s);
+            let _ = RegularSpectrum::<7>::center(&s).to_xyz();
+            let _ = reference::xyz(&data::lights::D65, &s);
             let _ = s.mean(555.0, 555.0);
         }
         let mut pdf = values.clone();
@@ -91,28 +90,28 @@ proptest! {
         let mut wavelengths = lambda.clone();
         wavelengths.resize(4, 500.0);
         let four = |v: &[f64]| [v[0], v[1], v[2], v[3]];
-        if let Ok(h) = HeroSample::with_pdf(four(&wavelengths), four(&pdf)) {
-            prop_assert!(h.to_xyz(data::D65.sample(&h)).y.is_finite());
+        if let Ok(h) = HeroSample::from_wavelengths(four(&wavelengths), four(&pdf)) {
+            prop_assert!(h.to_xyz(data::lights::D65.sample(&h)).y.is_finite());
         }
     }
 
     #[test]
     fn evaluators_take_any_floats(x in any_f64(), u in any_f64(), seed in any::<u64>()) {
-        for s in [&data::F11, &data::G4, &data::CIE_Z] {
+        for s in [&data::lights::F11, &data::patches::G4, &data::cie1931::Z_BAR] {
             let v = s.eval(x);
             prop_assert!(v.is_finite() && v >= 0.0);
         }
         // Documented: only the fractional part of u counts; non-finite u acts as 0.
         let h = HeroSample::<4>::new(u);
         prop_assert!(h.lambda().iter().all(|l| (380.0..=730.0).contains(l)), "{:?}", h.lambda());
-        prop_assert!(h.to_xyz(data::F11.sample(&h) * data::A1.sample(&h)).is_finite());
+        prop_assert!(h.to_xyz(data::lights::F11.sample(&h) * data::patches::A1.sample(&h)).is_finite());
         let mut terminated = h;
         terminated.terminate_secondary();
-        prop_assert!(terminated.to_xyz(data::F11.sample(&h) * data::A1.sample(&h)).is_finite());
+        prop_assert!(terminated.to_xyz(data::lights::F11.sample(&h) * data::patches::A1.sample(&h)).is_finite());
         let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
         for k in [0, 1, 4, 5, usize::MAX] {
-            let (pdf, strata) = (speclab::sampling::pdf::Uniform, speclab::sampling::strata::Strata::Independent);
-            let result = hero::estimate_dyn(k, &data::A, &data::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
+            let (pdf, strata) = (speclab::sampling::pdf::Uniform, speclab::sampling::strata::Strata::None);
+            let result = hero::estimate_dyn(k, &data::lights::A, &data::patches::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
             prop_assert_eq!(result.is_ok(), hero::WIDTHS.contains(&k));
         }
     }
@@ -120,13 +119,16 @@ proptest! {
     #[test]
     fn bucket_counts_and_huge_values(m in any::<usize>(), scale in any_f64()) {
         let m = NonZeroUsize::new(m).unwrap_or(NonZeroUsize::MIN);
-        for rule in [Rule::Centre, Rule::BoxAverage] {
-            let result = regular::xyz_dyn(m.get(), rule, &data::A, &data::E2);
-            prop_assert_eq!(result.is_ok(), m.get() <= regular::MAX_BUCKETS);
+        for rule in BucketRule::ALL {
+            let result = Buckets::new(m.get(), rule).map(|b| b.xyz(&data::lights::A, &data::patches::E2));
+            prop_assert_eq!(result.is_ok(), m.get() <= MAX_BUCKETS);
+            if let Ok(xyz) = result {
+                prop_assert!(xyz.is_finite());
+            }
         }
         if let Ok(light) = TabulatedSpectrum::new(vec![380.0, 730.0], vec![scale, scale], Role::Light) {
-            let _ = RegularSpectrum::<3>::centre(&light).to_xyz();
-            let _ = hero::estimate::<2, _>(&light, &data::A1, NonZeroUsize::MIN, &mut rand::rngs::StdRng::seed_from_u64(1));
+            let _ = RegularSpectrum::<3>::center(&light).to_xyz();
+            let _ = hero::estimate::<2, _>(&light, &data::patches::A1, NonZeroUsize::MIN, &mut rand::rngs::StdRng::seed_from_u64(1));
         }
     }
 }
@@ -140,13 +142,13 @@ proptest! {
     fn pdfs_take_any_numbers(u in any_f64(), lambda in any_f64(), n in 0..50usize, k in 0..6usize, seed in any::<u64>()) {
         use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
         use speclab::sampling::strata::Strata;
-        let pdfs: [&dyn WavelengthPdf; 4] = [&Uniform, &Visible, &LightPdf::light(&data::F11).expect("bright"), &LightPdf::balanced(&data::A).expect("bright")];
+        let pdfs: [&dyn WavelengthPdf; 4] = [&Uniform, &Visible, &LightPdf::light(&data::lights::F11).expect("bright"), &LightPdf::balanced(&data::lights::A).expect("bright")];
         for p in pdfs {
             let l = p.sample(u);
             prop_assert!((380.0..=730.0).contains(&l), "{}", l);
             let (d, c) = (p.pdf(lambda), p.cdf(lambda));
             prop_assert!(d.is_finite() && d >= 0.0 && (0.0..=1.0).contains(&c), "{} {}", d, c);
-            prop_assert!(HeroSample::<4>::from_pdf(u, &p).to_xyz(data::D65.sample(&HeroSample::<4>::new(u))).is_finite());
+            prop_assert!(HeroSample::<4>::from_pdf(u, p).to_xyz(data::lights::D65.sample(&HeroSample::<4>::new(u))).is_finite());
         }
         let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
         for strata in Strata::ALL {
@@ -166,14 +168,14 @@ proptest! {
         cubic in any::<bool>(),
     ) {
         let interpolation = if cubic { Interpolation::Cubic } else { Interpolation::Linear };
-        for light in [&data::A, &data::F11] {
+        for light in [&data::lights::A, &data::lights::F11] {
             if let Ok(p) = speclab::sampling::PreparedLight::for_grid(light, &grid, interpolation) {
                 let mut out = vec![speclab::Xyz::ZERO; outputs];
                 if p.batch(&samples, &mut out).is_ok() {
                     prop_assert!(out.iter().all(|x| x.is_finite()));
                 }
                 let _ = p.xyz_samples(&samples);
-                prop_assert!(p.xyz(&data::G4).is_finite());
+                prop_assert!(p.xyz(&data::patches::G4).is_finite());
             }
         }
     }

@@ -85,7 +85,7 @@ fn zero_regions_are_never_drawn() {
                 assert!(lambda > 500.0 && p.pdf(lambda) > 0.0, "drew {lambda} nm, density {}", p.pdf(lambda));
                 assert!(w.is_finite() && w > 0.0);
             }
-            let xyz = h.to_xyz(lamp.sample(&h) * speclab::data::G4.sample(&h));
+            let xyz = h.to_xyz(lamp.sample(&h) * speclab::data::patches::G4.sample(&h));
             assert!(xyz.is_finite());
         }
     }
@@ -94,8 +94,11 @@ fn zero_regions_are_never_drawn() {
 #[test]
 fn dark_lights_are_errors() {
     let dark = TabulatedSpectrum::new(vec![380.0, 730.0], vec![0.0, 0.0], Role::Light).expect("valid");
-    // Loaded: power only beyond 730 nm, none within the range.
-    let beyond = Load::new(Role::Light).text("380 0\n730 0\n760 5\n780 5", "beyond.txt").expect("valid file");
+    // Power only beyond 730 nm, none within the range (a file like this is
+    // refused when loaded: `tests/input_errors.rs`).
+    let beyond =
+        TabulatedSpectrum::new(vec![380.0, 730.0, 760.0, 780.0], vec![0.0, 0.0, 5.0, 5.0], Role::Light)
+            .expect("valid samples");
     for light in [&dark, &beyond] {
         for result in [LightPdf::light(light), LightPdf::balanced(light)] {
             let err = result.expect_err("no power where the observer sees");
@@ -144,18 +147,18 @@ fn spread_matches_exact_variance() {
             ];
             for (name, p, k) in cases {
                 let exact = if k == 1 {
-                    variance::hero_with::<1>(l, s, &p)
+                    variance::hero_with::<1>(l, s, p)
                 } else {
-                    variance::hero_with::<4>(l, s, &p)
+                    variance::hero_with::<4>(l, s, p)
                 };
                 let runs: Vec<speclab::Xyz> = (0..TRIALS)
                     .map(|_| {
                         let u: f64 = rng.random();
                         if k == 1 {
-                            let h = HeroSample::<1>::from_pdf(u, &p);
+                            let h = HeroSample::<1>::from_pdf(u, p);
                             h.to_xyz(l.sample(&h) * s.sample(&h))
                         } else {
-                            let h = HeroSample::<4>::from_pdf(u, &p);
+                            let h = HeroSample::<4>::from_pdf(u, p);
                             h.to_xyz(l.sample(&h) * s.sample(&h))
                         }
                     })
@@ -184,12 +187,12 @@ fn uniform_variance_is_the_closed_form() {
     use speclab::sampling::reference;
     use speclab::spectrum::observer::xyz_bar;
     use speclab::study::variance;
-    let (l, s) = (&speclab::data::D65, &speclab::data::F4);
+    let (l, s) = (&speclab::data::lights::D65, &speclab::data::patches::F4);
     // ∫ f² by a fine midpoint sum (f² is smooth between 5 nm knots).
     let h = 0.001;
     let second: f64 = (0..350_000)
         .map(|i| 380.0 + (f64::from(i) + 0.5) * h)
-        .map(|x| (xyz_bar(x).y * l.eval(x) * s.eval(x)).powi(2) * h)
+        .map(|x| (xyz_bar(x)[1] * l.eval(x) * s.eval(x)).powi(2) * h)
         .sum();
     let mean = reference::xyz(l, s).y;
     let closed = 350.0 * second - mean * mean;

@@ -1,10 +1,15 @@
-//! Regular buckets are exactly the Riemann sums `W/M · Σ valueᵢ · c̄ᵢ`, with
-//! the compile-time observer tables equal to the run-time definitions.
+//! Regular buckets are exactly the Riemann sums `W/M · Σ valueᵢ · c̄ᵢ`: the
+//! compile-time type `RegularSpectrum<M, B>` against sums written out here
+//! from the definitions, and the run-time `Buckets` (its own loops and
+//! observer tables, computed when made) against the compile-time type, bit
+//! for bit. Bucket values carry a path's throughput with the same
+//! arithmetic as sampled spectra.
 
-use speclab::data::{CIE_X, CIE_Y, CIE_Z, Light, Patch};
-use speclab::sampling::regular::{self, Rule};
+use speclab::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
+use speclab::data::{Light, Patch, lights, patches};
+use speclab::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
 use speclab::spectrum::observer;
-use speclab::{BoxAverage, Centre, RegularSpectrum, Xyz};
+use speclab::{BoxAverage, Center, RegularSpectrum, Xyz};
 
 /// Sums are rearranged (the library multiplies per bucket, then scales):
 /// allow f64 rounding only.
@@ -18,26 +23,29 @@ fn close(a: Xyz, b: Xyz) -> bool {
 
 fn check<const M: usize>() {
     let width = 350.0 / M as f64;
+    let (center, boxed) =
+        (Buckets::new(M, BucketRule::Center).unwrap(), Buckets::new(M, BucketRule::BoxAverage).unwrap());
     for light in Light::ALL {
         for patch in Patch::ALL {
             let (l, s) = (light.spectrum(), patch.spectrum());
-            // Centre: values at λᵢ = 380 + (i + ½)·W/M.
-            let mut centre = Xyz::ZERO;
-            let mut boxed = Xyz::ZERO;
+            // Center: values at λᵢ = 380 + (i + ½)·W/M; box: means over buckets.
+            let mut center_sum = Xyz::ZERO;
+            let mut box_sum = Xyz::ZERO;
             for i in 0..M {
                 let lambda = 380.0 + (i as f64 + 0.5) * width;
-                centre += observer::xyz_bar(lambda) * (l.eval(lambda) * s.eval(lambda) * width);
+                center_sum +=
+                    Xyz::from(observer::xyz_bar(lambda)) * (l.eval(lambda) * s.eval(lambda) * width);
                 let (a, b) = (380.0 + i as f64 * width, 380.0 + (i + 1) as f64 * width);
-                let cmf = Xyz::new(CIE_X.mean(a, b), CIE_Y.mean(a, b), CIE_Z.mean(a, b));
-                boxed += cmf * (l.mean(a, b) * s.mean(a, b) * width);
+                let cmf = Xyz::new(X_BAR.mean(a, b), Y_BAR.mean(a, b), Z_BAR.mean(a, b));
+                box_sum += cmf * (l.mean(a, b) * s.mean(a, b) * width);
             }
-            let c = (RegularSpectrum::<M, Centre>::centre(l) * RegularSpectrum::centre(s)).to_xyz();
+            let c = (RegularSpectrum::<M, Center>::center(l) * RegularSpectrum::center(s)).to_xyz();
             let b =
                 (RegularSpectrum::<M, BoxAverage>::box_average(l) * RegularSpectrum::box_average(s)).to_xyz();
-            assert!(close(c, centre), "M = {M} {light:?} {patch:?}: {c:?} vs {centre:?}");
-            assert!(close(b, boxed), "M = {M} {light:?} {patch:?}: {b:?} vs {boxed:?}");
-            assert_eq!(regular::xyz_dyn(M, Rule::Centre, l, s).expect("M supported"), c);
-            assert_eq!(regular::xyz_dyn(M, Rule::BoxAverage, l, s).expect("M supported"), b);
+            assert!(close(c, center_sum), "M = {M} {light} {patch}: {c:?} vs {center_sum:?}");
+            assert!(close(b, box_sum), "M = {M} {light} {patch}: {b:?} vs {box_sum:?}");
+            assert_eq!(center.xyz(l, s), c, "M = {M} {light} {patch}: run-time center");
+            assert_eq!(boxed.xyz(l, s), b, "M = {M} {light} {patch}: run-time box");
         }
     }
 }
@@ -53,8 +61,45 @@ fn riemann_sums_for_several_m() {
 
 #[test]
 fn unsupported_bucket_counts_are_errors() {
-    for m in [0, regular::MAX_BUCKETS + 1, usize::MAX] {
-        let err = regular::xyz_dyn(m, Rule::Centre, &speclab::data::A, &speclab::data::A1).unwrap_err();
-        assert!(err.to_string().contains(&m.to_string()), "{err}");
+    for m in [0, MAX_BUCKETS + 1, usize::MAX] {
+        let err = Buckets::new(m, BucketRule::Center).unwrap_err();
+        assert_eq!(err.to_string(), format!("expected a bucket count from 1 to 64, found {m}"));
     }
+    let one = Buckets::new(1, BucketRule::BoxAverage).unwrap();
+    assert_eq!((one.m(), one.rule()), (1, BucketRule::BoxAverage));
+    // A factor shorter than M counts as 0 where it has no value.
+    let three = Buckets::new(3, BucketRule::Center).unwrap();
+    let full = three.xyz_of_product(&[&[1.0, 1.0, 1.0]]);
+    let short = three.xyz_of_product(&[&[1.0, 1.0, 1.0], &[1.0, 1.0]]);
+    assert!(short.y < full.y && short.y > 0.0);
+}
+
+/// A path's throughput in buckets, as with sampled spectra: two bounces off
+/// the patch, seen through the light, and the shared arithmetic.
+#[test]
+fn buckets_carry_a_throughput() {
+    type R = RegularSpectrum<16, Center>;
+    let (le, albedo) = (R::center(&lights::D65), R::center(&patches::G4));
+    let (mut beta, mut l) = (R::splat(1.0), R::zero());
+    for _bounce in 0..2 {
+        beta *= albedo;
+        l += beta * le;
+    }
+    let by_hand = R::from_values(std::array::from_fn(|i| {
+        let (a, e) = (albedo.values()[i], le.values()[i]);
+        a * e + a * a * e
+    }));
+    assert_eq!(l, by_hand);
+    assert!(l.to_xyz().y > (albedo * le).to_xyz().y);
+    assert_eq!((2.0 * albedo - albedo) / 1.0, albedo);
+    assert_eq!(-(-le), le);
+    assert_eq!(albedo.clamp(0.0, 0.1).max_value(), 0.1);
+    assert!(albedo.safe_div(R::zero()).is_black());
+    assert_eq!(albedo.lerp(le, 0.0), albedo);
+    assert_eq!(R::default(), R::zero());
+    assert_eq!([albedo, albedo].into_iter().sum::<R>(), albedo * 2.0);
+    assert!(albedo.min_value() >= 0.0 && albedo.average() > albedo.min_value());
+    let mut v = albedo;
+    v[0] = 2.0;
+    assert_eq!(v[0], 2.0);
 }

@@ -12,7 +12,7 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use speclab::data::{Light, Patch};
 use speclab::sampling::reference;
-use speclab::{Error, HeroSample, LAMBDA_MIN, SampledSpectrum, TabulatedSpectrum, WIDTH, Xyz, data};
+use speclab::{Error, HeroSample, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, TabulatedSpectrum, Xyz, data};
 
 const TRIALS: usize = 2000;
 const N: usize = 8;
@@ -57,14 +57,14 @@ fn terminate_secondary_keeps_the_hero_alone() {
     assert!(!h.secondary_terminated());
     h.terminate_secondary();
     assert!(h.secondary_terminated());
-    assert_eq!(h.pdf(), [1.0 / (4.0 * WIDTH), 0.0, 0.0, 0.0]);
-    assert_eq!(h.inv_pdf(), &[4.0 * WIDTH, 0.0, 0.0, 0.0]);
+    assert_eq!(h.pdf(), [1.0 / (4.0 * LAMBDA_WIDTH), 0.0, 0.0, 0.0]);
+    assert_eq!(h.inv_pdf(), &[4.0 * LAMBDA_WIDTH, 0.0, 0.0, 0.0]);
     let once = h;
     h.terminate_secondary();
     assert_eq!(h, once, "terminating twice changes nothing");
-    let v = data::D65.sample(&h) * data::A1.sample(&h);
+    let v = data::lights::D65.sample(&h) * data::patches::A1.sample(&h);
     let alone = HeroSample::<1>::new(0.1);
-    let single = alone.to_xyz(data::D65.sample(&alone) * data::A1.sample(&alone));
+    let single = alone.to_xyz(data::lights::D65.sample(&alone) * data::patches::A1.sample(&alone));
     let terminated = h.to_xyz(v);
     assert!(
         (terminated - single).to_array().iter().all(|d| d.abs() < 1e-12 * single.y),
@@ -78,34 +78,59 @@ fn terminate_secondary_keeps_the_hero_alone() {
 /// sample space, is unbiased through `with_pdf`.
 #[test]
 fn own_distribution_through_with_pdf_is_unbiased() {
-    let lambda_of = |u: f64| LAMBDA_MIN + WIDTH * ((1.0 + 3.0 * u).sqrt() - 1.0);
-    let pdf_of = |lambda: f64| (1.0 + (lambda - LAMBDA_MIN) / WIDTH) / (1.5 * WIDTH);
+    let lambda_of = |u: f64| LAMBDA_MIN + LAMBDA_WIDTH * ((1.0 + 3.0 * u).sqrt() - 1.0);
+    let pdf_of = |lambda: f64| (1.0 + (lambda - LAMBDA_MIN) / LAMBDA_WIDTH) / (1.5 * LAMBDA_WIDTH);
     unbiased("ramp pdf", |l, s, rng| {
         let u: f64 = rng.random();
         let lambda: [f64; 4] = std::array::from_fn(|j| lambda_of((u + j as f64 / 4.0).fract()));
-        let h = HeroSample::with_pdf(lambda, lambda.map(pdf_of)).expect("valid");
+        let h = HeroSample::from_wavelengths(lambda, lambda.map(pdf_of)).expect("valid");
         h.to_xyz(l.sample(&h) * s.sample(&h))
     });
 }
 
 #[test]
 fn with_pdf_rejects_what_cannot_be_used() {
-    assert!(HeroSample::with_pdf([500.0, 600.0], [0.01, 0.0]).is_ok(), "pdf 0 marks a dropped wavelength");
+    assert!(
+        HeroSample::from_wavelengths([500.0, 600.0], [0.01, 0.0]).is_ok(),
+        "pdf 0 marks a dropped wavelength"
+    );
     for (lambda, pdf) in [(f64::NAN, 0.01), (500.0, -0.01), (500.0, f64::INFINITY), (f64::INFINITY, 0.01)] {
-        let err = HeroSample::with_pdf([400.0, lambda], [0.01, pdf]).unwrap_err();
+        let err = HeroSample::from_wavelengths([400.0, lambda], [0.01, pdf]).unwrap_err();
         assert!(matches!(err, Error::SampleWavelength { index: 1, .. }), "{err:?}");
     }
-    let dropped = HeroSample::with_pdf([500.0, 600.0], [0.0, 0.0]).expect("valid");
+    let dropped = HeroSample::from_wavelengths([500.0, 600.0], [0.0, 0.0]).expect("valid");
     assert_eq!(dropped.to_xyz(SampledSpectrum::splat(1.0)), Xyz::ZERO);
 }
 
+/// `y()` reads ȳ's own table (not the fused x̄ȳz̄ rows `to_xyz` reads),
+/// and gives the same luminance, to rounding, at any wavelengths and pdfs:
+/// uniform, light-following, terminated.
 #[test]
 fn luminance_alone_equals_to_xyz_y() {
+    let pdf = speclab::sampling::pdf::LightPdf::light(&data::lights::F11).expect("bright");
     for i in 0..1000 {
-        let h = HeroSample::<4>::new(f64::from(i) / 1000.0);
-        let v = data::F11.sample(&h) * data::H4.sample(&h);
-        assert_eq!(h.y(v), h.to_xyz(v).y);
+        let u = f64::from(i) / 1000.0;
+        let mut drawn = HeroSample::<4>::from_pdf(u, &pdf);
+        if i % 3 == 0 {
+            drawn.terminate_secondary();
+        }
+        for h in [HeroSample::<4>::new(u), drawn] {
+            let v = data::lights::F11.sample(&h) * data::patches::H4.sample(&h);
+            let (y, xyz) = (h.y(v), h.to_xyz(v).y);
+            assert!((y - xyz).abs() <= 1e-12 * xyz.abs(), "{h:?}: {y} vs {xyz}");
+        }
     }
+    // Normalised by ∫ȳ, a constant spectrum's luminance is the constant.
+    let n = 4096;
+    let mean: f64 = (0..n)
+        .map(|i| {
+            let h = HeroSample::<4>::new((f64::from(i) + 0.5) / f64::from(n));
+            h.y(SampledSpectrum::splat(2.5))
+        })
+        .sum::<f64>()
+        / f64::from(n);
+    let normalised = mean / speclab::spectrum::observer::Y_BAR_INTEGRAL;
+    assert!((normalised - 2.5).abs() < 1e-6, "{normalised}");
 }
 
 #[test]
@@ -156,11 +181,11 @@ fn safe_division() {
 #[test]
 fn pdf_round_trip() {
     let pdf = [0.004, 1e-3, 0.0, 0.0123];
-    let h = HeroSample::with_pdf([400.0, 500.0, 600.0, 700.0], pdf).expect("valid");
+    let h = HeroSample::from_wavelengths([400.0, 500.0, 600.0, 700.0], pdf).expect("valid");
     for (got, want) in h.pdf().iter().zip(pdf) {
         assert!((got - want).abs() <= 1e-15 * want, "{got} vs {want}");
     }
     assert_eq!(h.inv_pdf()[2], 0.0);
-    assert!(HeroSample::with_pdf([400.0], [1e-310]).is_err());
-    assert_eq!(HeroSample::<2>::new(0.25).pdf(), [1.0 / WIDTH; 2]);
+    assert!(HeroSample::from_wavelengths([400.0], [1e-310]).is_err());
+    assert_eq!(HeroSample::<2>::new(0.25).pdf(), [1.0 / LAMBDA_WIDTH; 2]);
 }

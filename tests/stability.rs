@@ -7,8 +7,8 @@ use std::num::NonZeroUsize;
 
 use speclab::Xyz;
 use speclab::data::{Light, Patch};
+use speclab::sampling::buckets::{BucketRule as Rule, Buckets};
 use speclab::sampling::reference;
-use speclab::sampling::regular::{self, Rule};
 use speclab::study::method::{Method, derive_seed};
 use speclab::study::{perceptual, trials, variance};
 
@@ -18,7 +18,7 @@ fn nz(n: usize) -> NonZeroUsize {
 
 fn de00_regular(light: Light, patch: Patch, m: usize, rule: Rule) -> f64 {
     let (l, s) = (light.spectrum(), patch.spectrum());
-    let estimate = regular::xyz_dyn(m, rule, l, s).expect("compiled M");
+    let estimate = Buckets::new(m, rule).expect("1 ≤ M ≤ 64").xyz(l, s);
     perceptual::delta_e00(estimate, reference::xyz(l, s), reference::white(l))
 }
 
@@ -35,18 +35,18 @@ fn centre_buckets_are_not_monotone_under_f11() {
     for patch in Patch::ALL {
         let exact = reference::xyz(l, patch.spectrum()).y;
         let y_error =
-            |m| (regular::xyz_dyn(m, Rule::Centre, l, patch.spectrum()).expect("M").y - exact).abs() / exact;
+            |m| (Buckets::new(m, Rule::Center).expect("M").xyz(l, patch.spectrum()).y - exact).abs() / exact;
         let (e8, e16) = (y_error(8), y_error(16));
         eprintln!("F11 {patch:?}: centre |ΔY|/Y at M = 8: {e8:.3}, M = 16: {e16:.3}");
         assert!(e16 > e8, "{patch:?}: M = 16 ({e16}) should be worse than M = 8 ({e8})");
-        let de: Vec<f64> = (8..=45).map(|m| de00_regular(Light::F11, patch, m, Rule::Centre)).collect();
+        let de: Vec<f64> = (8..=45).map(|m| de00_regular(Light::F11, patch, m, Rule::Center)).collect();
         let rises = de.windows(2).filter(|w| w[1] > w[0]).count();
         eprintln!("F11 {patch:?}: centre ΔE00 rises {rises} times over M = 8..45");
         assert!(rises >= 10, "{patch:?}: ΔE00 rises only {rises} times over M = 8..45");
     }
     assert!(
-        de00_regular(Light::F11, Patch::G4, 16, Rule::Centre)
-            > de00_regular(Light::F11, Patch::G4, 8, Rule::Centre)
+        de00_regular(Light::F11, Patch::G4, 16, Rule::Center)
+            > de00_regular(Light::F11, Patch::G4, 8, Rule::Center)
     );
 }
 
@@ -59,7 +59,7 @@ fn box_buckets_stay_bounded_under_f11() {
     const BOX_BOUND: f64 = 6.0;
     for patch in Patch::ALL {
         let worst = |rule| (16..=64).map(|m| de00_regular(Light::F11, patch, m, rule)).fold(0.0, f64::max);
-        let (boxed, centre) = (worst(Rule::BoxAverage), worst(Rule::Centre));
+        let (boxed, centre) = (worst(Rule::BoxAverage), worst(Rule::Center));
         eprintln!("F11 {patch:?}: worst ΔE00 over M = 16..64: box {boxed:.2}, centre {centre:.2}");
         assert!(boxed < BOX_BOUND, "{patch:?}: box ΔE00 {boxed}");
         assert!(centre >= 10.0, "{patch:?}: centre ΔE00 only {centre}");

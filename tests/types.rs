@@ -3,7 +3,7 @@
 //! (`static_assertions`); there is nothing left to check at run time.
 
 use speclab::{
-    BoxAverage, Centre, HeroSample, LinearSrgb, RegularSpectrum, SampledSpectrum, TabulatedSpectrum, Xyz,
+    BoxAverage, Center, HeroSample, LinearSrgb, RegularSpectrum, SampledSpectrum, TabulatedSpectrum, Xyz,
 };
 use static_assertions::{assert_eq_size, assert_impl_all};
 
@@ -12,7 +12,7 @@ assert_eq_size!(HeroSample<4>, [f64; 8]);
 assert_eq_size!(HeroSample<8>, [f64; 16]);
 assert_eq_size!(SampledSpectrum<1>, f64);
 assert_eq_size!(SampledSpectrum<4>, [f64; 4]);
-assert_eq_size!(RegularSpectrum<16, Centre>, [f64; 16]);
+assert_eq_size!(RegularSpectrum<16, Center>, [f64; 16]);
 assert_eq_size!(RegularSpectrum<45, BoxAverage>, [f64; 45]);
 assert_eq_size!(Xyz, [f64; 3]);
 

@@ -22,7 +22,10 @@ fn perfect_white() -> TabulatedSpectrum {
 fn riemann(light: &TabulatedSpectrum, a: f64, b: f64) -> Xyz {
     let steps = ((b - a) / 0.005).round() as usize;
     let h = (b - a) / steps as f64;
-    (0..steps).map(|i| a + (i as f64 + 0.5) * h).map(|l| observer::xyz_bar(l) * (light.eval(l) * h)).sum()
+    (0..steps)
+        .map(|i| a + (i as f64 + 0.5) * h)
+        .map(|l| Xyz::from(observer::xyz_bar(l)) * (light.eval(l) * h))
+        .sum()
 }
 
 #[test]

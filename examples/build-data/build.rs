@@ -1,9 +1,9 @@
-//! Turns `data/*` into `static` spectra with speclab's build helper: the
-//! same parser, validation and errors as run-time loading. A bad file
-//! fails this build with `file:line:column: expected …, found …`.
+//! Turns `data/*` into `static` spectra with `speclab_tables::Codegen`: the
+//! same parser, validation and errors as speclab's run-time loading. A bad
+//! file fails this build with `file:line:column: expected …, found …`.
+//! Only `speclab-tables` (std only) is compiled for this script.
 
-use speclab::Role;
-use speclab::codegen::Codegen;
+use speclab_tables::{Codegen, Role};
 
 fn main() {
     let mut code = Codegen::new();

@@ -1,15 +1,14 @@
-//! Glue shared by the examples: option values and exit statuses.
+//! Glue shared by the examples: exit statuses, option values the library
+//! does not parse itself, and whether the terminal takes colour.
 
 // Each example uses part of this module.
 #![allow(dead_code)]
 
 use std::io::{self, IsTerminal};
+use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
-use speclab::color::GamutMap;
-use speclab::sampling::strata::Strata;
-use speclab::study::remarks::Normalization;
-use speclab::study::sampling::Pdf;
+use speclab::sampling::buckets::MAX_BUCKETS;
 
 /// Prints `message` as the program's error and returns exit status 2.
 pub fn fail(program: &str, message: impl std::fmt::Display) -> ExitCode {
@@ -25,31 +24,30 @@ pub fn finish(program: &str, written: io::Result<()>) -> ExitCode {
     }
 }
 
-/// The `--pdf` value, or a message naming the choices.
-pub fn pdf(name: &str) -> Result<Pdf, String> {
-    Pdf::from_name(name)
-        .ok_or_else(|| format!("unknown pdf {name:?}: expected uniform, visible, light or balanced"))
+/// A `--m` value: a bucket count from 1 to 64, or a message saying so.
+pub fn buckets(value: &str) -> Result<NonZeroUsize, String> {
+    let m = value.parse::<usize>().ok().and_then(NonZeroUsize::new).filter(|m| m.get() <= MAX_BUCKETS);
+    m.ok_or_else(|| format!("expected a bucket count from 1 to {MAX_BUCKETS}, found {value:?}"))
 }
 
-/// The `--strata` value, or a message naming the choices.
-pub fn strata(name: &str) -> Result<Strata, String> {
-    Strata::from_name(name)
-        .ok_or_else(|| format!("unknown strata {name:?}: expected independent, jitter or kronecker"))
+/// A sample count (`--n`, `--trials`): a positive integer, or a message saying so.
+pub fn count(what: &str, value: &str) -> Result<NonZeroUsize, String> {
+    value
+        .parse::<NonZeroUsize>()
+        .map_err(|_| format!("expected a positive number of {what}, found {value:?}"))
 }
 
-/// The `--normalize` value, or a message naming the choices.
-pub fn normalization(name: &str) -> Result<Normalization, String> {
-    Normalization::from_name(name)
-        .ok_or_else(|| format!("unknown normalisation {name:?}: expected none, power or luminance"))
+/// True if standard output takes truecolour swatches: a terminal that says
+/// so (`COLORTERM` is `truecolor` or `24bit`), and `NO_COLOR` unset or empty.
+pub fn color() -> bool {
+    let truecolor = std::env::var("COLORTERM").is_ok_and(|v| v == "truecolor" || v == "24bit");
+    let no_color = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+    io::stdout().is_terminal() && truecolor && !no_color
 }
 
-/// The `--gamut` value, or a message naming the choices.
-pub fn gamut(name: &str) -> Result<GamutMap, String> {
-    GamutMap::from_name(name).ok_or_else(|| format!("unknown gamut map {name:?}: expected clip or chroma"))
-}
-
-/// True if standard output takes truecolour swatches: a terminal, and
-/// `NO_COLOR` unset or empty.
-pub fn colour() -> bool {
-    io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+/// A `--k` value: a compiled hero width, or a message naming them.
+pub fn hero_width(value: &str) -> Result<usize, String> {
+    let widths = speclab::sampling::hero::WIDTHS;
+    let k = value.parse::<usize>().ok().filter(|k| widths.contains(k));
+    k.ok_or_else(|| format!("expected a hero width of {widths:?} wavelengths, found {value:?}"))
 }

@@ -23,8 +23,8 @@
 //! ```
 //! use speclab::color::display::{Display, Exposure, GamutMap, Srgb8};
 //! use speclab::{data, sampling::reference};
-//! let white = reference::white(&data::D65);
-//! let g4 = reference::xyz(&data::D65, &data::G4).to_linear_srgb(); // red; green < 0
+//! let white = reference::white(&data::lights::D65);
+//! let g4 = reference::xyz(&data::lights::D65, &data::patches::G4).to_linear_srgb(); // red; green < 0
 //! let display = Display::new(Exposure::for_white(white), GamutMap::Chroma);
 //! let Srgb8 { r, g, b } = display.pixel(g4);
 //! assert_eq!(g, 0); // on the gamut's edge: desaturated just enough
@@ -52,8 +52,9 @@
 //! assert!(linear.distance(encoded.decode()) < 1e-12);
 //! ```
 
-use crate::color::Xyz;
 use crate::color::srgb::{self, LinearSrgb, SRGB_TO_XYZ};
+use crate::color::xyz::Xyz;
+use crate::error::named_choices;
 
 /// A positive factor that linear colours are multiplied by before display.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -102,8 +103,7 @@ impl Exposure {
     #[inline]
     #[must_use]
     pub fn apply(self, rgb: LinearSrgb) -> LinearSrgb {
-        let k = self.factor;
-        LinearSrgb::new(rgb.r * k, rgb.g * k, rgb.b * k)
+        rgb * self.factor
     }
 }
 
@@ -117,24 +117,11 @@ pub enum GamutMap {
     Chroma,
 }
 
+named_choices!(GamutMap, "a gamut map": Clip => "clip", Chroma => "chroma");
+
 impl GamutMap {
     /// Both, in CLI order.
     pub const ALL: [GamutMap; 2] = [GamutMap::Clip, GamutMap::Chroma];
-
-    /// The name used on the command line: `clip` or `chroma`.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            GamutMap::Clip => "clip",
-            GamutMap::Chroma => "chroma",
-        }
-    }
-
-    /// The map with this name.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<GamutMap> {
-        GamutMap::ALL.into_iter().find(|m| m.name() == name)
-    }
 
     /// `rgb` mapped into [0, 1]³.
     #[inline]
@@ -151,8 +138,7 @@ impl GamutMap {
 #[inline]
 #[must_use]
 pub fn clip(rgb: LinearSrgb) -> LinearSrgb {
-    // `v > 0.0` rather than `>=`: equal results at 0 (and at −0.0, which
-    // compares equal to 0); the comparison is false for NaN, hence 0.
+    // The comparison is false for NaN, hence 0.
     let c = |v: f64| if v > 0.0 { v.min(1.0) } else { 0.0 };
     LinearSrgb::new(c(rgb.r), c(rgb.g), c(rgb.b))
 }
@@ -195,8 +181,6 @@ pub fn reduce_chroma(rgb: LinearSrgb) -> LinearSrgb {
     }
     let grey = y / WHITE_LUMINANCE;
     // The largest t in [0, 1] that keeps grey + t·(c − grey) in [0, 1]³.
-    // (`d >= 0.0` in the first test would be equivalent: (1 − grey)/0 = ∞
-    // leaves t as it is.)
     let t = c.iter().fold(1.0_f64, |t, &v| {
         let d = v - grey;
         if d > 0.0 {

@@ -13,6 +13,11 @@
 //!   and encoded sRGB as different types.
 //! - [`adaptation`]: Bradford chromatic adaptation between whites.
 //!
+//! [`Xyz`] and [`LinearSrgb`] have the whole component-wise operator set
+//! (`+ - * /` with each other and with scalars on either side, the assign
+//! forms, `Neg`, `Sum`, `From<[f64; 3]>`). This floor uses only the
+//! spectrum floor below it (the observer's and the matrix's tables).
+//!
 //! ```
 //! use speclab::Xyz;
 //! let rgb = Xyz::new(0.0, 1.0, 0.0).to_linear_srgb();
@@ -24,6 +29,7 @@ pub mod adaptation;
 pub mod display;
 pub mod matrix;
 pub mod srgb;
+pub(crate) mod triple;
 mod xyz;
 
 pub use display::{Display, EncodedSrgb, Exposure, GamutMap, Srgb8};

@@ -13,11 +13,13 @@
 //! assert!((decode(encode(0.5)) - 0.5).abs() < 1e-15);
 //! ```
 
-use crate::color::Xyz;
 use crate::color::matrix::{Matrix, inverse, mul};
+use crate::color::triple::triple_arithmetic;
+use crate::color::xyz::Xyz;
+use crate::spectrum::data;
 
 /// XYZ → linear sRGB, from `data/xyz_to_srgb.txt` (Appendix 1, part D).
-pub const XYZ_TO_SRGB: Matrix = crate::spectrum::data::XYZ_TO_SRGB;
+pub const XYZ_TO_SRGB: Matrix = data::XYZ_TO_SRGB;
 
 /// Linear sRGB → XYZ: the inverse of [`XYZ_TO_SRGB`], computed at compile
 /// time. Its middle row, the luminance of `r, g, b`, is 0.21262, 0.71514,
@@ -70,12 +72,6 @@ impl LinearSrgb {
         LinearSrgb { r, g, b }
     }
 
-    /// `[r, g, b]`.
-    #[must_use]
-    pub const fn to_array(self) -> [f64; 3] {
-        [self.r, self.g, self.b]
-    }
-
     /// True if no component is negative (the colour is inside sRGB's gamut,
     /// up to the light's arbitrary brightness scale).
     #[must_use]
@@ -94,17 +90,18 @@ impl LinearSrgb {
     /// Back to XYZ by [`SRGB_TO_XYZ`].
     #[must_use]
     pub fn to_xyz(self) -> Xyz {
-        let [x, y, z] = mul(&SRGB_TO_XYZ, self.to_array());
-        Xyz::new(x, y, z)
+        Xyz::from(mul(&SRGB_TO_XYZ, self.to_array()))
     }
 
     /// Euclidean distance to `other`.
     #[must_use]
     pub fn distance(self, other: LinearSrgb) -> f64 {
-        let d = [self.r - other.r, self.g - other.g, self.b - other.b];
-        (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+        let [r, g, b] = (self - other).to_array();
+        (r * r + g * g + b * b).sqrt()
     }
 }
+
+triple_arithmetic!(LinearSrgb { r, g, b });
 
 #[cfg(test)]
 mod tests {

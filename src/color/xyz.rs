@@ -1,10 +1,15 @@
-//! CIE XYZ tristimulus values, with the arithmetic of sums of estimates.
-
-use std::iter::Sum;
-use std::ops::{Add, AddAssign, Div, Mul, Sub};
+//! CIE XYZ tristimulus values, with the arithmetic of sums of estimates
+//! (see [`super::triple`]).
+//!
+//! ```
+//! use speclab::Xyz;
+//! let sum: Xyz = [Xyz::new(1.0, 2.0, 3.0), Xyz::from([0.5, 0.5, 0.5])].into_iter().sum();
+//! assert_eq!(sum / 2.0, Xyz::new(0.75, 1.25, 1.75));
+//! ```
 
 use crate::color::matrix::mul;
-use crate::color::{LinearSrgb, XYZ_TO_SRGB};
+use crate::color::srgb::{LinearSrgb, XYZ_TO_SRGB};
+use crate::color::triple::triple_arithmetic;
 
 /// CIE 1931 XYZ tristimulus values.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -32,68 +37,11 @@ impl Xyz {
     #[inline]
     #[must_use]
     pub fn to_linear_srgb(self) -> LinearSrgb {
-        let [r, g, b] = mul(&XYZ_TO_SRGB, self.to_array());
-        LinearSrgb::new(r, g, b)
-    }
-
-    /// `[x, y, z]`.
-    #[inline]
-    #[must_use]
-    pub const fn to_array(self) -> [f64; 3] {
-        [self.x, self.y, self.z]
-    }
-
-    /// True if every component is finite.
-    #[must_use]
-    pub fn is_finite(self) -> bool {
-        self.to_array().iter().all(|c| c.is_finite())
+        LinearSrgb::from(mul(&XYZ_TO_SRGB, self.to_array()))
     }
 }
 
-impl Add for Xyz {
-    type Output = Xyz;
-    #[inline]
-    fn add(self, o: Xyz) -> Xyz {
-        Xyz::new(self.x + o.x, self.y + o.y, self.z + o.z)
-    }
-}
-
-impl AddAssign for Xyz {
-    #[inline]
-    fn add_assign(&mut self, o: Xyz) {
-        *self = *self + o;
-    }
-}
-
-impl Sub for Xyz {
-    type Output = Xyz;
-    #[inline]
-    fn sub(self, o: Xyz) -> Xyz {
-        Xyz::new(self.x - o.x, self.y - o.y, self.z - o.z)
-    }
-}
-
-impl Mul<f64> for Xyz {
-    type Output = Xyz;
-    #[inline]
-    fn mul(self, s: f64) -> Xyz {
-        Xyz::new(self.x * s, self.y * s, self.z * s)
-    }
-}
-
-impl Div<f64> for Xyz {
-    type Output = Xyz;
-    #[inline]
-    fn div(self, s: f64) -> Xyz {
-        Xyz::new(self.x / s, self.y / s, self.z / s)
-    }
-}
-
-impl Sum for Xyz {
-    fn sum<I: Iterator<Item = Xyz>>(iter: I) -> Xyz {
-        iter.fold(Xyz::ZERO, |a, b| a + b)
-    }
-}
+triple_arithmetic!(Xyz { x, y, z });
 
 #[cfg(test)]
 mod tests {
@@ -104,10 +52,31 @@ mod tests {
         let (a, b) = (Xyz::new(1.0, 2.0, 3.0), Xyz::new(0.5, -1.0, 4.0));
         assert_eq!(a - b, Xyz::new(0.5, 3.0, -1.0));
         assert_eq!(a + b, Xyz::new(1.5, 1.0, 7.0));
+        assert_eq!(a * b, Xyz::new(0.5, -2.0, 12.0));
+        assert_eq!(a / b, Xyz::new(2.0, -2.0, 0.75));
         assert_eq!(a * 2.0, Xyz::new(2.0, 4.0, 6.0));
+        assert_eq!(2.0 * a, a * 2.0);
         assert_eq!(a / 2.0, Xyz::new(0.5, 1.0, 1.5));
+        assert_eq!(6.0 / a, Xyz::new(6.0, 3.0, 2.0));
+        assert_eq!(1.0 + a, a + 1.0);
+        assert_eq!(1.0 - a, -(a - 1.0));
+        assert_eq!(-a, Xyz::new(-1.0, -2.0, -3.0));
+        let mut c = a;
+        c += b;
+        c -= a;
+        assert_eq!(c, b);
+        c *= 2.0;
+        c /= Xyz::splat(2.0);
+        c += 1.0;
+        c -= 1.0;
+        c *= Xyz::new(1.0, 1.0, 0.5);
+        c /= 2.0;
+        assert_eq!(c, Xyz::new(0.25, -0.5, 1.0));
         assert_eq!([a, b, a].into_iter().sum::<Xyz>(), Xyz::new(2.5, 3.0, 10.0));
         assert_eq!(std::iter::empty::<Xyz>().sum::<Xyz>(), Xyz::default());
+        assert_eq!(Xyz::from([1.0, 2.0, 3.0]), a);
+        assert_eq!(<[f64; 3]>::from(a), [1.0, 2.0, 3.0]);
         assert!(a.is_finite() && !Xyz::new(0.0, f64::NAN, 0.0).is_finite());
+        assert!(!Xyz::new(f64::INFINITY, 0.0, 0.0).is_finite() && !Xyz::new(0.0, 0.0, f64::NAN).is_finite());
     }
 }

@@ -7,20 +7,22 @@
 //! - two-column text: CSV, TSV or whitespace, with `#` comments and an
 //!   optional header ([`columns`]).
 //!
-//! [`text`] is the toolkit they share (positions, errors, a cursor) and
-//! [`read`] the one route from bytes to validated samples. **A new input
-//! format** is a file beside `brace.rs` that turns text into
-//! [`text::Samples`], plus a variant of [`read::Format`] (and a rule in
-//! `Format::detect`); validation, positions in errors and the range check
-//! come for free.
+//! [`text`] is the toolkit they share and [`read`] the one route from bytes
+//! to validated samples. All five live in the std-only `speclab-tables`
+//! crate (re-exported here), so that build scripts read files exactly as
+//! [`Load`] does. **A new input format** is a file beside
+//! `tables/src/brace.rs` that turns text into [`text::Samples`], plus a
+//! variant of [`read::Format`] (and a rule in `Format::detect`);
+//! validation, positions in errors and the range check come for free.
 //!
 //! Samples are validated for their [`Role`] (see
 //! [`crate::spectrum::validate`]), and a loaded spectrum **must cover the
 //! integration range** 380–730 nm: a lamp file that stops at 700 nm is an
 //! error, not a silently darker colour. (A spectrum built in code with
 //! [`TabulatedSpectrum::new`] is instead zero outside its samples.) Files
-//! and streams larger than [`read::MAX_BYTES`] are refused. Every error names
-//! the source, line and column.
+//! and streams larger than [`read::MAX_BYTES`] are refused, and so is a
+//! light with no power in the range. Every error names the source, line and
+//! column.
 //!
 //! ```
 //! use speclab::io::Load;
@@ -33,17 +35,13 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-pub mod brace;
-pub mod columns;
-pub mod json;
-pub mod read;
-pub mod text;
-
 use std::path::Path;
 
-pub use read::Format;
+pub use speclab_tables::read::Format;
+pub use speclab_tables::{brace, columns, json, read, text};
 
-use crate::{Error, Interpolation, Role, TabulatedSpectrum};
+use crate::error::Error;
+use crate::spectrum::{Interpolation, Role, TabulatedSpectrum};
 
 /// How to load: the role, the interpolation (by default the role's) and the
 /// format (by default detected).
@@ -78,8 +76,8 @@ impl Load {
 
     /// A spectrum from `text`; `origin` names it in errors.
     pub fn text(&self, text: &str, origin: &str) -> Result<TabulatedSpectrum, Error> {
-        let samples = read::samples(text, origin, self.role, self.interpolation, self.format)?;
-        Ok(TabulatedSpectrum::from_samples(samples, self.role, self.interpolation))
+        let s = read::samples(text, origin, self.role, self.interpolation, self.format)?;
+        Ok(TabulatedSpectrum::from_validated(s.lambda, s.values, self.role, self.interpolation))
     }
 
     /// A spectrum from the file at `path` (at most [`read::MAX_BYTES`]).

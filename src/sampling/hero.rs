@@ -7,7 +7,8 @@
 //! Sampling"). Every `λⱼ` is then uniform on the range, with pdf `1/W`.
 //! `K = 1` is plain single-wavelength random sampling; `K = 0` does not
 //! compile. A renderer with its own sampler or wavelength distribution
-//! hands its wavelengths and their pdfs to [`HeroSample::with_pdf`].
+//! hands its wavelengths and their pdfs to [`HeroSample::from_wavelengths`],
+//! or its uniform number and a [`WavelengthPdf`] to [`HeroSample::from_pdf`].
 //!
 //! A spectrum evaluated at a sample is a [`SampledSpectrum<K>`]. The sample's
 //! XYZ contribution is `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)` (a wavelength of pdf 0, for
@@ -16,14 +17,14 @@
 //!
 //! ```
 //! use rand::{SeedableRng, rngs::StdRng};
-//! use speclab::{data, sampling::hero, HeroSample};
+//! use speclab::{data::{lights, patches}, sampling::hero, HeroSample};
 //! let h = HeroSample::<4>::new(0.0);
 //! assert_eq!(h.lambda(), &[380.0, 467.5, 555.0, 642.5]);
-//! let v = data::D65.sample(&h) * data::A1.sample(&h);
+//! let v = lights::D65.sample(&h) * patches::A1.sample(&h);
 //! let one = h.to_xyz(v); // a one-sample estimate
-//! assert_eq!(h.y(v), one.y);
+//! assert!((h.y(v) - one.y).abs() < 1e-12 * one.y);
 //! let n = std::num::NonZeroUsize::new(1000).unwrap();
-//! let mean = hero::estimate::<4, _>(&data::D65, &data::A1, n, &mut StdRng::seed_from_u64(1));
+//! let mean = hero::estimate::<4, _>(&lights::D65, &patches::A1, n, &mut StdRng::seed_from_u64(1));
 //! assert!(one.y > 0.0 && (mean.y - 82.0).abs() < 5.0);
 //! ```
 //!
@@ -35,11 +36,11 @@ use std::num::NonZeroUsize;
 
 use rand::Rng;
 
-use crate::sampling::SampledSpectrum;
+use crate::color::Xyz;
+use crate::error::Error;
 use crate::sampling::pdf::{Uniform, WavelengthPdf};
 use crate::sampling::strata::Strata;
-use crate::spectrum::observer;
-use crate::{Error, LAMBDA_MIN, TabulatedSpectrum, WIDTH, Xyz};
+use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, TabulatedSpectrum, Wavelengths, observer};
 
 /// K wavelengths drawn together (a hero and K − 1 companions), each with
 /// the probability density it was drawn with. The sample keeps each pdf's
@@ -56,7 +57,7 @@ impl<const K: usize> HeroSample<K> {
     const NONZERO: () = assert!(K > 0, "HeroSample needs at least one wavelength (K > 0)");
 
     /// The density of a uniform wavelength, 1/nm: `1/W` over 380–730 nm.
-    pub const UNIFORM_PDF: f64 = 1.0 / WIDTH;
+    pub const UNIFORM_PDF: f64 = 1.0 / LAMBDA_WIDTH;
 
     /// The uniform hero sample for `u`: `λⱼ = 380 + W·((u + j/K) mod 1)`,
     /// each of pdf `1/W`. Only the fractional part of `u` counts (1.25 acts
@@ -69,9 +70,9 @@ impl<const K: usize> HeroSample<K> {
         let u = fract(u);
         let lambda = std::array::from_fn(|j| {
             let v = u + j as f64 / K as f64;
-            LAMBDA_MIN + WIDTH * if v >= 1.0 { v - 1.0 } else { v }
+            LAMBDA_MIN + LAMBDA_WIDTH * if v >= 1.0 { v - 1.0 } else { v }
         });
-        HeroSample { lambda, inv_pdf: [WIDTH; K] }
+        HeroSample { lambda, inv_pdf: [LAMBDA_WIDTH; K] }
     }
 
     /// The sample of wavelengths `lambda` (nm) drawn with densities `pdf`
@@ -79,7 +80,7 @@ impl<const K: usize> HeroSample<K> {
     /// wavelength must be finite and each pdf finite and non-negative with a
     /// finite reciprocal; a pdf of 0 marks a wavelength that contributes
     /// nothing.
-    pub fn with_pdf(lambda: [f64; K], pdf: [f64; K]) -> Result<Self, Error> {
+    pub fn from_wavelengths(lambda: [f64; K], pdf: [f64; K]) -> Result<Self, Error> {
         let () = Self::NONZERO;
         let mut inv_pdf = [0.0; K];
         for (index, ((&l, &p), w)) in lambda.iter().zip(&pdf).zip(&mut inv_pdf).enumerate() {
@@ -96,11 +97,11 @@ impl<const K: usize> HeroSample<K> {
     /// The sample for `u` under the density `pdf`, rotated in primary-sample
     /// space: `λⱼ = P⁻¹((u + j/K) mod 1)`, so that every `λⱼ` has density p
     /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased. With
-    /// [`Uniform`](crate::sampling::pdf::Uniform) this is
+    /// [`Uniform`] this is
     /// [`HeroSample::new`]. `u` is taken as in [`HeroSample::new`].
     #[inline]
     #[must_use]
-    pub fn from_pdf(u: f64, pdf: &impl WavelengthPdf) -> Self {
+    pub fn from_pdf<P: WavelengthPdf + ?Sized>(u: f64, pdf: &P) -> Self {
         let () = Self::NONZERO;
         let u = fract(u);
         let (mut lambda, mut inv_pdf) = ([0.0; K], [0.0; K]);
@@ -164,20 +165,24 @@ impl<const K: usize> HeroSample<K> {
         let cmf = observer::xyz_bar_lanes(&self.lambda);
         let mut sum = Xyz::ZERO;
         for ((c, v), w) in cmf.iter().zip(v.values).zip(self.inv_pdf) {
-            sum += *c * (v * w);
+            sum += Xyz::from(*c) * (v * w);
         }
         sum * (1.0 / K as f64)
     }
 
     /// The luminance alone, `Σⱼ ȳ(λⱼ)·vⱼ / (K·pdfⱼ)`: the Y of
-    /// [`HeroSample::to_xyz`], for Russian roulette and other decisions.
+    /// [`HeroSample::to_xyz`] (to rounding), from ȳ's table alone, for
+    /// Russian roulette and other decisions. In the units of `v` times nm,
+    /// like every Y here: divide by
+    /// [`observer::Y_BAR_INTEGRAL`]
+    /// for the luminance of a constant spectrum to come out as that constant.
     #[inline]
     #[must_use]
     pub fn y(&self, v: SampledSpectrum<K>) -> f64 {
-        let cmf = observer::xyz_bar_lanes(&self.lambda);
+        let y_bar = observer::y_bar_lanes(&self.lambda);
         let mut sum = 0.0;
-        for ((c, v), w) in cmf.iter().zip(v.values).zip(self.inv_pdf) {
-            sum += c.y * (v * w);
+        for ((c, v), w) in y_bar.iter().zip(v.values).zip(self.inv_pdf) {
+            sum += c * (v * w);
         }
         sum * (1.0 / K as f64)
     }
@@ -207,12 +212,10 @@ fn fract_slow(u: f64) -> f64 {
     if f < 1.0 { f } else { 0.0 }
 }
 
-impl TabulatedSpectrum {
-    /// The spectrum's values at the wavelengths of `h`.
-    #[inline(always)]
-    #[must_use]
-    pub fn sample<const K: usize>(&self, h: &HeroSample<K>) -> SampledSpectrum<K> {
-        SampledSpectrum::new(self.eval_lanes(&h.lambda))
+impl<const K: usize> Wavelengths<K> for HeroSample<K> {
+    #[inline]
+    fn lambda(&self) -> &[f64; K] {
+        &self.lambda
     }
 }
 
@@ -227,18 +230,18 @@ pub fn estimate<const K: usize, R: Rng + ?Sized>(
     n: NonZeroUsize,
     rng: &mut R,
 ) -> Xyz {
-    estimate_with::<K, R>(light, surface, n, &Uniform, Strata::Independent, rng)
+    estimate_with::<K, _, R>(light, surface, n, &Uniform, Strata::None, rng)
 }
 
 /// [`estimate`] with wavelengths drawn from `pdf` and the n primary numbers
 /// spread by `strata`: unbiased for every pdf that is positive wherever
 /// `light × surface` is, and every strata.
 #[must_use]
-pub fn estimate_with<const K: usize, R: Rng + ?Sized>(
+pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
     n: NonZeroUsize,
-    pdf: &impl WavelengthPdf,
+    pdf: &P,
     strata: Strata,
     rng: &mut R,
 ) -> Xyz {
@@ -252,30 +255,35 @@ pub fn estimate_with<const K: usize, R: Rng + ?Sized>(
     sum / n.get() as f64
 }
 
-/// The hero widths K that [`estimate_dyn`] dispatches to compiled instances.
-pub const WIDTHS: [usize; 6] = [1, 2, 3, 4, 8, 16];
+/// The usual hero width: four wavelengths per sample.
+pub const USUAL_K: usize = 4;
 
-/// [`estimate_with`] for a hero width `k` known only at run time:
-/// dispatches to `HeroSample<K>` for K in [`WIDTHS`], an error otherwise.
-pub fn estimate_dyn<R: Rng + ?Sized>(
-    k: usize,
-    light: &TabulatedSpectrum,
-    surface: &TabulatedSpectrum,
-    n: NonZeroUsize,
-    pdf: &impl WavelengthPdf,
-    strata: Strata,
-    rng: &mut R,
-) -> Result<Xyz, Error> {
-    Ok(match k {
-        1 => estimate_with::<1, R>(light, surface, n, pdf, strata, rng),
-        2 => estimate_with::<2, R>(light, surface, n, pdf, strata, rng),
-        3 => estimate_with::<3, R>(light, surface, n, pdf, strata, rng),
-        4 => estimate_with::<4, R>(light, surface, n, pdf, strata, rng),
-        8 => estimate_with::<8, R>(light, surface, n, pdf, strata, rng),
-        16 => estimate_with::<16, R>(light, surface, n, pdf, strata, rng),
-        _ => return Err(Error::UnsupportedHeroWidth { k }),
-    })
+/// The one list of hero widths compiled for a width known only at run
+/// time: [`WIDTHS`], and [`estimate_dyn`]'s dispatch over them.
+macro_rules! hero_widths {
+    ($($k:literal)*) => {
+        /// The hero widths K that [`estimate_dyn`] dispatches to compiled instances.
+        pub const WIDTHS: &[usize] = &[$($k),*];
+
+        /// [`estimate_with`] for a hero width `k` known only at run time:
+        /// dispatches to `HeroSample<K>` for K in [`WIDTHS`], an error otherwise.
+        pub fn estimate_dyn<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
+            k: usize,
+            light: &TabulatedSpectrum,
+            surface: &TabulatedSpectrum,
+            n: NonZeroUsize,
+            pdf: &P,
+            strata: Strata,
+            rng: &mut R,
+        ) -> Result<Xyz, Error> {
+            match k {
+                $($k => Ok(estimate_with::<$k, P, R>(light, surface, n, pdf, strata, rng)),)*
+                _ => Err(Error::HeroWidth { k, widths: WIDTHS }),
+            }
+        }
+    };
 }
+hero_widths!(1 2 3 4 8 16);
 
 #[cfg(test)]
 mod tests {

@@ -13,14 +13,12 @@
 //! bisection: about three iterations, no allocation, and the CDF of the
 //! returned wavelength equals `u` to within 1e-12.
 //!
-//! This file depends on `std` only: `build.rs` includes it to tabulate the
-//! built-in lights' pdfs at compile time.
+//! The table is built when a [`super::pdf::LightPdf`] is made (about 8 µs
+//! for a built-in light), for built-in and loaded lights alike.
 
-use std::borrow::Cow;
-
-use crate::sampling::weights::View;
 use crate::spectrum::interp::{self, Coeffs};
-use crate::spectrum::range::{LAMBDA_MAX, LAMBDA_MIN};
+use crate::spectrum::piecewise::View;
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// Coefficients of the density on one piece, in `t = λ − start`.
 pub(crate) type Poly = [f64; 7];
@@ -29,31 +27,15 @@ pub(crate) type Poly = [f64; 7];
 /// unnormalised CDF at the ends, and the total.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PiecewisePdf {
-    ends: Cow<'static, [f64]>,
-    polys: Cow<'static, [Poly]>,
-    cdf: Cow<'static, [f64]>,
+    ends: Vec<f64>,
+    polys: Vec<Poly>,
+    cdf: Vec<f64>,
     /// `guide[i]`: the first piece whose CDF at its end exceeds
     /// `i/len·total`. Sampling starts there and steps forward: O(1).
-    guide: Cow<'static, [u32]>,
+    guide: Vec<u32>,
 }
 
 impl PiecewisePdf {
-    /// Over static tables, for generated code: they must be the ones
-    /// [`PiecewisePdf::new`] computes.
-    pub(crate) const fn from_static(
-        ends: &'static [f64],
-        polys: &'static [Poly],
-        cdf: &'static [f64],
-        guide: &'static [u32],
-    ) -> Self {
-        PiecewisePdf {
-            ends: Cow::Borrowed(ends),
-            polys: Cow::Borrowed(polys),
-            cdf: Cow::Borrowed(cdf),
-            guide: Cow::Borrowed(guide),
-        }
-    }
-
     /// The density ∝ `light·Σ alpha꜀·cmf꜀`, or `None` if it integrates to
     /// zero (or to something not finite) over 380–730 nm.
     pub(crate) fn new(light: &View, cmf: &[View; 3], alpha: [f64; 3]) -> Option<Self> {
@@ -88,8 +70,6 @@ impl PiecewisePdf {
         let total = cdf[cdf.len() - 1];
         let bright = total.is_finite() && total > 0.0;
         let guide = guide(&cdf, 2 * polys.len());
-        let (ends, polys, cdf, guide) =
-            (Cow::Owned(ends), Cow::Owned(polys), Cow::Owned(cdf), Cow::Owned(guide));
         bright.then_some(PiecewisePdf { ends, polys, cdf, guide })
     }
 
@@ -143,25 +123,6 @@ impl PiecewisePdf {
         let (p, h) = (&self.polys[k], self.ends[k + 1] - self.ends[k]);
         let t = invert(p, target - self.cdf[k], h, self.cdf[k + 1] - self.cdf[k]);
         (self.ends[k] + t, (value(p, t) / total).max(0.0))
-    }
-
-    /// The Rust source of `static {name}: PiecewisePdf`, for build scripts.
-    #[allow(dead_code)] // used by speclab's build.rs, which includes this file
-    pub(crate) fn to_source(&self, name: &str, crate_path: &str) -> String {
-        let (e, p, c, g) = (&self.ends, &self.polys, &self.cdf, &self.guide);
-        format!(
-            "pub const {name}_ENDS: [f64; {}] = {e:?};\n\
-             pub const {name}_POLYS: [[f64; 7]; {}] = {p:?};\n\
-             pub const {name}_CDF: [f64; {}] = {c:?};\n\
-             pub const {name}_GUIDE: [u32; {}] = {g:?};\n\
-             pub(crate) static {name}: {crate_path}::sampling::light_pdf::PiecewisePdf =\n    \
-             {crate_path}::sampling::light_pdf::PiecewisePdf::from_static(\n        \
-             &{name}_ENDS, &{name}_POLYS, &{name}_CDF, &{name}_GUIDE);\n",
-            e.len(),
-            p.len(),
-            c.len(),
-            g.len()
-        )
     }
 }
 

@@ -19,8 +19,8 @@
 //! `λⱼ = P⁻¹((u + j/K) mod 1)`, so each `λⱼ` has density p.
 //!
 //! ```
-//! use speclab::{data, sampling::pdf::{LightPdf, Visible, WavelengthPdf}};
-//! let f11 = LightPdf::light(&data::F11)?;
+//! use speclab::{data::lights, sampling::pdf::{LightPdf, Visible, WavelengthPdf}};
+//! let f11 = LightPdf::light(&lights::F11)?;
 //! let lambda = f11.sample(0.5);
 //! assert!(f11.pdf(lambda) > 0.0);
 //! assert!((f11.cdf(lambda) - 0.5).abs() < 1e-12);
@@ -28,12 +28,10 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use std::borrow::Cow;
-
+use crate::error::Error;
 use crate::sampling::light_pdf::PiecewisePdf;
 use crate::sampling::reference;
-use crate::spectrum::{data, observer};
-use crate::{Error, LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, WIDTH};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, TabulatedSpectrum, observer};
 
 /// A probability density over wavelengths that can be sampled by inverting
 /// its cumulative distribution.
@@ -81,22 +79,22 @@ pub struct Uniform;
 impl WavelengthPdf for Uniform {
     #[inline]
     fn sample(&self, u: f64) -> f64 {
-        LAMBDA_MIN + WIDTH * unit(u)
+        LAMBDA_MIN + LAMBDA_WIDTH * unit(u)
     }
 
     #[inline]
     fn pdf(&self, lambda: f64) -> f64 {
-        if (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) { 1.0 / WIDTH } else { 0.0 }
+        if (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) { 1.0 / LAMBDA_WIDTH } else { 0.0 }
     }
 
     /// Exactly `W` inside the range.
     #[inline]
     fn inv_pdf(&self, lambda: f64) -> f64 {
-        if (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) { WIDTH } else { 0.0 }
+        if (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) { LAMBDA_WIDTH } else { 0.0 }
     }
 
     fn cdf(&self, lambda: f64) -> f64 {
-        let c = (lambda - LAMBDA_MIN) / WIDTH;
+        let c = (lambda - LAMBDA_MIN) / LAMBDA_WIDTH;
         if c > 0.0 { c.min(1.0) } else { 0.0 }
     }
 }
@@ -145,54 +143,31 @@ impl WavelengthPdf for Visible {
 }
 
 /// A density that follows a light: `∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)`, tabulated exactly
-/// (see `light_pdf.rs`). The built-in lights' tables are computed at build
-/// time; other lights' when the pdf is made.
+/// (see `light_pdf.rs`) when the pdf is made, for any light.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LightPdf {
-    table: Cow<'static, PiecewisePdf>,
-}
-
-/// Which weights α the density gives the matching functions.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub(crate) enum Weighting {
-    /// α = (1, 1, 1): `L·(x̄ + ȳ + z̄)`.
-    Light,
-    /// α꜀ = 1/white꜀: each channel relative to the light's white.
-    Balanced,
+    table: PiecewisePdf,
 }
 
 impl LightPdf {
     /// `p ∝ L(λ)·(x̄ + ȳ + z̄)(λ)`. An error if the light has no power where
     /// the observer sees, within 380–730 nm.
     pub fn light(light: &TabulatedSpectrum) -> Result<Self, Error> {
-        Self::new(light, Weighting::Light)
+        Self::new(light, [1.0; 3])
     }
 
     /// `p ∝ L(λ)·Σ꜀ c̄꜀(λ)/white꜀`, with white꜀ the light's perfect white
     /// (a channel whose white is zero gets no weight: its estimate is zero
     /// anyway). The same error as [`LightPdf::light`].
     pub fn balanced(light: &TabulatedSpectrum) -> Result<Self, Error> {
-        Self::new(light, Weighting::Balanced)
+        let alpha = reference::white(light).to_array().map(|w| if w > 0.0 { 1.0 / w } else { 0.0 });
+        Self::new(light, alpha)
     }
 
-    fn new(light: &TabulatedSpectrum, weighting: Weighting) -> Result<Self, Error> {
-        if let Some(table) = data::builtin_pdf(light, weighting) {
-            return Ok(LightPdf { table: Cow::Borrowed(table) });
-        }
-        let alpha = alpha(light, weighting);
-        PiecewisePdf::new(&light.view(), &observer::views(), alpha)
-            .map(|table| LightPdf { table: Cow::Owned(table) })
-            .ok_or(Error::DarkLight)
-    }
-}
-
-/// The matching functions' weights α for `weighting` under `light`.
-pub(crate) fn alpha(light: &TabulatedSpectrum, weighting: Weighting) -> [f64; 3] {
-    match weighting {
-        Weighting::Light => [1.0; 3],
-        Weighting::Balanced => {
-            reference::white(light).to_array().map(|w| if w > 0.0 { 1.0 / w } else { 0.0 })
-        }
+    /// `p ∝ L·Σ alpha꜀·c̄꜀`, or [`Error::DarkLight`] if that has no mass.
+    fn new(light: &TabulatedSpectrum, alpha: [f64; 3]) -> Result<Self, Error> {
+        let table = PiecewisePdf::new(&light.view(), &observer::views(), alpha);
+        table.map(|table| LightPdf { table }).ok_or(Error::DarkLight)
     }
 }
 
@@ -215,27 +190,5 @@ impl WavelengthPdf for LightPdf {
     fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
         let (lambda, pdf) = self.table.sample_with_pdf(u);
         (lambda, reciprocal(pdf))
-    }
-}
-
-impl<P: WavelengthPdf + ?Sized> WavelengthPdf for &P {
-    fn sample(&self, u: f64) -> f64 {
-        (**self).sample(u)
-    }
-
-    fn pdf(&self, lambda: f64) -> f64 {
-        (**self).pdf(lambda)
-    }
-
-    fn inv_pdf(&self, lambda: f64) -> f64 {
-        (**self).inv_pdf(lambda)
-    }
-
-    fn cdf(&self, lambda: f64) -> f64 {
-        (**self).cdf(lambda)
-    }
-
-    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
-        (**self).sample_with_inv_pdf(u)
     }
 }

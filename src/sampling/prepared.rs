@@ -2,64 +2,75 @@
 //! as a dot product with the reflectance's samples (see [`Weights`]).
 //!
 //! Preparing computes one weight per sample and channel for the
-//! reflectances' grid; the built-in lights carry theirs for the patches'
-//! 10 nm grid, computed at build time. Each XYZ is then exact and O(n): a
+//! reflectances' grid (a light keeps the weights for the first grid it is
+//! prepared for, so preparing it again is free). Each XYZ is then exact and O(n): a
 //! dot product, plus exact integration of the few segments where a
 //! reflectance's clamp to [0, 1] acts. [`PreparedLight::batch`] converts a
 //! slice of raw sample arrays into a slice of XYZ, without allocating per
 //! spectrum; split the slices to use more threads.
 //!
 //! ```
-//! use speclab::{data, sampling::{PreparedLight, reference}};
-//! let d65 = PreparedLight::for_grid(&data::D65, data::G4.lambda(), data::G4.interpolation())?;
-//! let fast = d65.xyz(&data::G4);
-//! let exact = reference::xyz(&data::D65, &data::G4);
+//! use speclab::{data::{lights, patches}, sampling::{PreparedLight, reference}};
+//! let d65 = PreparedLight::for_grid(&lights::D65, patches::G4.lambda(), patches::G4.interpolation())?;
+//! let fast = d65.xyz(&patches::G4);
+//! let exact = reference::xyz_of_product(&[&lights::D65, &patches::G4]);
 //! assert!((fast.y - exact.y).abs() <= 1e-12 * exact.y);
 //! let mut out = [speclab::Xyz::ZERO; 2];
-//! let samples: Vec<f64> = [data::G4.values(), data::A1.values()].concat();
+//! let samples: Vec<f64> = [patches::G4.values(), patches::A1.values()].concat();
 //! d65.batch(&samples, &mut out)?;
 //! assert!((out[0].y - exact.y).abs() <= 1e-12 * exact.y);
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use std::borrow::Cow;
+use std::sync::Arc;
 
-use crate::sampling::weights::{self, Weights};
-use crate::spectrum::interp;
-use crate::spectrum::validate::{self, Field, Invalid, SampleError};
-use crate::spectrum::{data, observer};
-use crate::{Error, Interpolation, Role, TabulatedSpectrum, Xyz};
+use crate::color::Xyz;
+use crate::error::{Error, Field, Invalid, SampleError};
+use crate::spectrum::weights::{self, Weights};
+use crate::spectrum::{Interpolation, Role, TabulatedSpectrum, interp};
+use crate::spectrum::{integrate, validate};
 
 /// A light with its exact weights for reflectances on one grid.
 #[derive(Clone, Debug)]
 pub struct PreparedLight<'a> {
     light: &'a TabulatedSpectrum,
-    weights: Cow<'a, Weights>,
+    weights: Held<'a>,
+}
+
+/// Weights kept by the light (borrowed) or shared with it.
+#[derive(Clone, Debug)]
+enum Held<'a> {
+    Borrowed(&'a Weights),
+    Shared(Arc<Weights>),
+}
+
+impl std::ops::Deref for Held<'_> {
+    type Target = Weights;
+    fn deref(&self) -> &Weights {
+        match self {
+            Held::Borrowed(w) => w,
+            Held::Shared(w) => w,
+        }
+    }
 }
 
 impl<'a> PreparedLight<'a> {
     /// `light` prepared for reflectances sampled at `grid` (nm, strictly
-    /// increasing) and interpolated by `interpolation`. A built-in light on
-    /// the patches' 10 nm grid takes its compiled-in weights; otherwise the
-    /// weights are computed now (exactly, once).
+    /// increasing) and interpolated by `interpolation`: the weights the
+    /// light keeps, if they are for this grid, or computed now (exactly,
+    /// once; about 20 µs for a patch's 36 samples).
     pub fn for_grid(
         light: &'a TabulatedSpectrum,
         grid: &[f64],
         interpolation: Interpolation,
     ) -> Result<Self, Error> {
         validate::validate(grid, &vec![0.0; grid.len()], Role::Reflectance, interpolation)?;
-        let weights = match data::builtin_weights(light) {
-            Some(w) if w.grid() == grid && w.interpolation() == interpolation => Cow::Borrowed(w),
-            _ => Cow::Owned(Weights::compute(&light.view(), &observer::views(), grid, interpolation)),
-        };
-        Ok(PreparedLight { light, weights })
+        Ok(PreparedLight { light, weights: Held::Shared(light.weights(grid, interpolation)) })
     }
 
-    /// The built-in weights of `light` if it is a built-in light (or a clone
-    /// of one) and `surface` is on their grid.
-    pub(crate) fn builtin(light: &'a TabulatedSpectrum, surface: &TabulatedSpectrum) -> Option<Self> {
-        let prepared = PreparedLight { light, weights: Cow::Borrowed(data::builtin_weights(light)?) };
-        prepared.fits(surface).then_some(prepared)
+    /// `light` with `weights` it keeps.
+    pub(crate) fn borrowed(light: &'a TabulatedSpectrum, weights: &'a Weights) -> Self {
+        PreparedLight { light, weights: Held::Borrowed(weights) }
     }
 
     /// True if `surface` is on this light's grid, with its interpolation.
@@ -74,7 +85,7 @@ impl<'a> PreparedLight<'a> {
     #[must_use]
     pub fn xyz(&self, surface: &TabulatedSpectrum) -> Xyz {
         if !self.fits(surface) {
-            return super::reference::xyz_of_product(&[self.light, surface]);
+            return Xyz::from(integrate::xyz_of_product(&[self.light, surface]));
         }
         let r = surface.values();
         let mut sum = dot(self.weights.samples(), r);
@@ -82,7 +93,7 @@ impl<'a> PreparedLight<'a> {
         for (k, _) in surface.clean().iter().enumerate().filter(|(_, clean)| !**clean) {
             self.correct(&mut sum, r, k, surface.coeffs()[k], surface.bounds(), &mut scratch);
         }
-        Xyz::new(sum[0], sum[1], sum[2])
+        Xyz::from(sum)
     }
 
     /// The exact XYZ of the light times the reflectance with samples `r` on
@@ -133,7 +144,7 @@ impl<'a> PreparedLight<'a> {
                     self.correct_overshoots(&mut sum, y, &mut scratch);
                 }
             }
-            *o = Xyz::new(sum[0], sum[1], sum[2]);
+            *o = Xyz::from(sum);
         }
         Ok(())
     }
@@ -182,7 +193,6 @@ impl<'a> PreparedLight<'a> {
         let grid = self.weights.grid();
         let exact = weights::segment_exact(
             &self.light.view(),
-            &observer::views(),
             [grid[k], grid[k + 1]],
             c,
             bounds,

@@ -1,7 +1,7 @@
 //! The exact reference: XYZ of light × surface by exact integration.
 //!
 //! Between two consecutive breaks every factor is a polynomial of degree
-//! ≤ 3, so the product with a matching function has degree ≤ 9 and 5-point
+//! ≤ 3, so the product with a matching function has degree ≤ 7 and 5-point
 //! Gauss–Legendre on each piece is exact up to rounding. All arithmetic is
 //! f64. This reproduces Appendix 2 (see `tests/appendix2.rs`).
 //!
@@ -12,25 +12,31 @@
 //! white's XYZ, and every sampler (which draws within 380–730 nm) is
 //! unbiased for both.
 //!
+//! **Speed**: a light keeps exact weights for its reflectances' grid,
+//! computed on first use (about 20 µs), after which each XYZ is a dot
+//! product with the reflectance's samples ([`PreparedLight`]): about
+//! 80 ns for a patch. Built-in, cloned, scaled and loaded lights all do so.
+//!
 //! ```
-//! use speclab::{data, sampling::reference};
-//! let rgb = reference::xyz(&data::D65, &data::A1).to_linear_srgb();
+//! use speclab::{data::{lights, patches}, sampling::reference};
+//! let rgb = reference::xyz(&lights::D65, &patches::A1).to_linear_srgb();
 //! assert!((rgb.g - 82.44).abs() < 0.05); // Appendix 2: 80.79, 82.44, 80.84
+//! let scaled = lights::D65.scaled(2.0)?;
+//! assert!((reference::xyz(&scaled, &patches::A1).y - 2.0 * reference::xyz(&lights::D65, &patches::A1).y).abs() < 1e-9);
+//! # Ok::<(), speclab::Error>(())
 //! ```
 
-use crate::sampling::quadrature::{self, GAUSS_5};
-use crate::sampling::{PreparedLight, weights};
-use crate::spectrum::observer;
-use crate::{LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, Xyz};
+use crate::color::Xyz;
+use crate::sampling::PreparedLight;
+use crate::spectrum::{TabulatedSpectrum, integrate};
 
-/// XYZ of `light × surface`. For a built-in light (or a clone of one)
-/// and a reflectance on the patches' 10 nm grid this is a dot product with
-/// weights computed at build time ([`crate::sampling::PreparedLight`]);
-/// otherwise exact integration piece by piece. Both are exact.
+/// XYZ of `light × surface`: a dot product with the light's weights for
+/// the surface's grid ([`PreparedLight`], kept by the light after the first
+/// call), exact, like integration piece by piece.
 #[must_use]
 pub fn xyz(light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Xyz {
-    match PreparedLight::builtin(light, surface) {
-        Some(prepared) => prepared.xyz(surface),
+    match light.weights_for(surface) {
+        Some(weights) => PreparedLight::borrowed(light, weights).xyz(surface),
         None => xyz_of_product(&[light, surface]),
     }
 }
@@ -38,31 +44,12 @@ pub fn xyz(light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Xyz {
 /// XYZ of the perfect white (reflectance 1 over 380–730 nm) under `light`.
 #[must_use]
 pub fn white(light: &TabulatedSpectrum) -> Xyz {
-    let [x, y, z] = weights::white(&light.view(), &observer::views());
-    Xyz::new(x, y, z)
+    Xyz::from(integrate::white(&light.view()))
 }
 
 /// XYZ of the product of `factors` over 380–730 nm and their common
-/// support; zero if that is empty.
+/// support, integrated piece by piece; zero if that is empty.
 #[must_use]
 pub fn xyz_of_product(factors: &[&TabulatedSpectrum]) -> Xyz {
-    let a = factors.iter().map(|s| s.support().0).fold(LAMBDA_MIN, f64::max);
-    let b = factors.iter().map(|s| s.support().1).fold(LAMBDA_MAX, f64::min);
-    if a >= b {
-        return Xyz::ZERO;
-    }
-    let pieces = quadrature::pieces(
-        factors
-            .iter()
-            .copied()
-            .chain(observer::CMFS)
-            .flat_map(|s| s.breaks().iter().copied())
-            .filter(|&x| x > a && x < b)
-            .chain([a, b]),
-    );
-    let [x, y, z] = quadrature::integrate(&GAUSS_5, &pieces, |lambda| {
-        let f: f64 = factors.iter().map(|s| s.eval(lambda)).product();
-        (observer::xyz_bar(lambda) * f).to_array()
-    });
-    Xyz::new(x, y, z)
+    Xyz::from(integrate::xyz_of_product(factors))
 }

@@ -1,66 +1,55 @@
 //! The assignment's built-in spectra, as static data generated at build time.
 //!
 //! `build.rs` reads `data/*.txt` (brace notation, values exactly as printed
-//! in Appendix 1) with [`crate::codegen`], the build helper that users get
-//! too, and emits the samples plus precomputed segment coefficients.
+//! in Appendix 1) with `speclab_tables::Codegen`, the build helper that users
+//! get too, and emits the samples plus precomputed segment coefficients.
 //! Provenance, units, step and range of every file are in `data/SOURCES.md`.
 //!
-//! - Lights (5 nm, linear): [`A`] 380–730 nm, [`D65`] and [`F11`] 380–780 nm.
-//! - ColorChecker SG patches (10 nm, cubic, 380–730 nm): [`E2`], [`F4`],
-//!   [`G4`], [`H4`], [`J4`], [`A1`].
-//! - CIE 1931 2° matching functions (5 nm, cubic, 380–780 nm): [`CIE_X`],
-//!   [`CIE_Y`], [`CIE_Z`].
+//! Grouped so that a light cannot be mistaken for a patch:
+//! - [`lights`] (5 nm, linear): `A` 380–730 nm, `D65` and `F11` 380–780 nm;
+//!   also by name, [`Light`].
+//! - [`patches`], ColorChecker SG (10 nm, cubic, 380–730 nm): `E2`, `F4`,
+//!   `G4`, `H4`, `J4`, `A1`; also by name, [`Patch`].
+//! - [`cie1931`], the 2° matching functions (5 nm, cubic, 380–780 nm):
+//!   `X_BAR`, `Y_BAR`, `Z_BAR`.
 //!
 //! ```
-//! use speclab::data::{Light, Patch};
-//! assert_eq!(Light::F11.spectrum().eval(545.0), 72.84);
-//! assert_eq!(Patch::A1.name(), "A1");
+//! use speclab::data::{lights, patches, Light, Patch};
+//! assert_eq!(lights::F11.eval(545.0), 72.84);
+//! assert_eq!("f11".parse::<Light>()?.spectrum(), &lights::F11);
+//! assert_eq!(Patch::A1.to_string(), "A1");
+//! assert!(patches::A1.eval(555.0) > 0.8);
+//! # Ok::<(), speclab::Error>(())
 //! ```
 
-use crate::TabulatedSpectrum;
-use crate::sampling::light_pdf::PiecewisePdf;
-use crate::sampling::pdf::Weighting;
-use crate::sampling::weights::Weights;
+use crate::error::named_choices;
+use crate::spectrum::TabulatedSpectrum;
 
 mod generated {
     include!(concat!(env!("OUT_DIR"), "/data.rs"));
 }
 
-/// The compiled-in reference weights of `light`, if it is a built-in light
-/// or a clone of one (its tables are the static ones), for reflectances on
-/// the patches' 10 nm grid. Computed by `build.rs`.
-pub(crate) fn builtin_weights(light: &TabulatedSpectrum) -> Option<&'static Weights> {
-    let weights = [&generated::A_WEIGHTS, &generated::D65_WEIGHTS, &generated::F11_WEIGHTS];
-    builtin_light(light).map(|i| weights[i])
+/// The three appendix lights (relative spectral power; see `data/SOURCES.md`).
+pub mod lights {
+    pub use super::generated::{A, D65, F11};
 }
 
-/// The compiled-in wavelength pdf of `light` (see `builtin_weights`).
-pub(crate) fn builtin_pdf(light: &TabulatedSpectrum, weighting: Weighting) -> Option<&'static PiecewisePdf> {
-    let pdfs = match weighting {
-        Weighting::Light => [&generated::A_PDF_LIGHT, &generated::D65_PDF_LIGHT, &generated::F11_PDF_LIGHT],
-        Weighting::Balanced => {
-            [&generated::A_PDF_BALANCED, &generated::D65_PDF_BALANCED, &generated::F11_PDF_BALANCED]
-        }
-    };
-    builtin_light(light).map(|i| pdfs[i])
+/// The six ColorChecker SG patches of the appendix (reflectance, 0–1).
+pub mod patches {
+    pub use super::generated::{A1, E2, F4, G4, H4, J4};
 }
 
-/// Which built-in light `light` is (by its static tables), if any.
-fn builtin_light(light: &TabulatedSpectrum) -> Option<usize> {
-    let same = |s: &TabulatedSpectrum| {
-        let (a, b) = (s.values(), light.values());
-        std::ptr::eq(a, b) && std::ptr::eq(s.lambda(), light.lambda()) && s.role() == light.role()
-    };
-    [&A, &D65, &F11].into_iter().position(same)
+/// The CIE 1931 2° standard observer's matching functions x̄, ȳ, z̄.
+pub mod cie1931 {
+    pub use super::generated::{CIE_X as X_BAR, CIE_Y as Y_BAR, CIE_Z as Z_BAR};
 }
 
-pub use generated::{A, A1, CIE_X, CIE_Y, CIE_Z, D65, E2, F4, F11, G4, H4, J4};
 pub(crate) use generated::{
     CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,
     CIE_Z_COEFFS, CIE_Z_LAMBDA, XYZ_TO_SRGB,
 };
 
-/// The three appendix lights.
+/// The three appendix lights, by name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Light {
     /// CIE illuminant A (incandescent).
@@ -79,30 +68,16 @@ impl Light {
     #[must_use]
     pub fn spectrum(self) -> &'static TabulatedSpectrum {
         match self {
-            Light::A => &A,
-            Light::D65 => &D65,
-            Light::F11 => &F11,
+            Light::A => &lights::A,
+            Light::D65 => &lights::D65,
+            Light::F11 => &lights::F11,
         }
-    }
-
-    /// Its name as Appendix 2 writes it.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Light::A => "A",
-            Light::D65 => "D65",
-            Light::F11 => "F11",
-        }
-    }
-
-    /// The light with this name (case-insensitive).
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<Light> {
-        Light::ALL.into_iter().find(|l| l.name().eq_ignore_ascii_case(name))
     }
 }
 
-/// The six ColorChecker SG patches of the appendix.
+named_choices!(Light, "a built-in light": A => "A", D65 => "D65", F11 => "F11");
+
+/// The six ColorChecker SG patches of the appendix, by name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Patch {
     /// E2, dark skin.
@@ -127,31 +102,14 @@ impl Patch {
     #[must_use]
     pub fn spectrum(self) -> &'static TabulatedSpectrum {
         match self {
-            Patch::E2 => &E2,
-            Patch::F4 => &F4,
-            Patch::G4 => &G4,
-            Patch::H4 => &H4,
-            Patch::J4 => &J4,
-            Patch::A1 => &A1,
+            Patch::E2 => &patches::E2,
+            Patch::F4 => &patches::F4,
+            Patch::G4 => &patches::G4,
+            Patch::H4 => &patches::H4,
+            Patch::J4 => &patches::J4,
+            Patch::A1 => &patches::A1,
         }
-    }
-
-    /// Its name as Appendix 2 writes it.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Patch::E2 => "E2",
-            Patch::F4 => "F4",
-            Patch::G4 => "G4",
-            Patch::H4 => "H4",
-            Patch::J4 => "J4",
-            Patch::A1 => "A1",
-        }
-    }
-
-    /// The patch with this name (case-insensitive).
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<Patch> {
-        Patch::ALL.into_iter().find(|p| p.name().eq_ignore_ascii_case(name))
     }
 }
+
+named_choices!(Patch, "a built-in patch": E2 => "E2", F4 => "F4", G4 => "G4", H4 => "H4", J4 => "J4", A1 => "A1");

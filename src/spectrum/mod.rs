@@ -1,31 +1,43 @@
-//! Continuous spectra: samples plus an interpolant, evaluated at any
-//! wavelength in nanometres.
+//! Continuous spectra, the bottom floor: samples plus an interpolant,
+//! evaluated at any wavelength in nanometres, and integrated exactly.
 //!
 //! - [`TabulatedSpectrum`]: a light, a reflectance or a matching function.
 //!   Its [`Role`] picks the [`Interpolation`] and the value bounds.
-//! - [`validate`]: what makes samples a spectrum (shared with `build.rs`).
+//! - [`SampledSpectrum`]: a spectrum's values at K wavelengths (any
+//!   [`Wavelengths`]), with point-wise arithmetic.
+//! - [`validate`]: what makes samples a spectrum (shared with build
+//!   scripts through `speclab_tables`).
 //! - [`observer`]: the CIE 1931 x̄, ȳ, z̄ at any wavelength.
 //! - [`data`]: the assignment's built-in spectra, static data made at
-//!   compile time.
+//!   compile time: [`data::lights`], [`data::patches`], [`data::cie1931`].
 //! - The range every integral and sampler covers: [`LAMBDA_MIN`] to
-//!   [`LAMBDA_MAX`] (380–730 nm, width [`WIDTH`] = 350 nm).
+//!   [`LAMBDA_MAX`] (380–730 nm, width [`LAMBDA_WIDTH`] = 350 nm).
+//!
+//! This floor uses nothing above it: colour (`color`), sampling, reading
+//! files (`io`) and the study build on it. It does not parse text.
 //!
 //! ```
-//! use speclab::{data, spectrum::observer};
-//! let v = data::F11.eval(545.0) * data::G4.eval(545.0) * observer::xyz_bar(545.0).y;
+//! use speclab::data::{lights, patches};
+//! use speclab::spectrum::observer;
+//! let v = lights::F11.eval(545.0) * patches::G4.eval(545.0) * observer::xyz_bar(545.0)[1];
 //! assert!(v > 0.0);
 //! ```
 
 pub mod data;
-mod grid;
-pub(crate) mod interp;
-#[cfg(test)]
-mod interp_tests;
+pub(crate) mod integrate;
+pub(crate) mod lookup;
 pub mod observer;
-pub(crate) mod range;
+pub(crate) mod piecewise;
+pub(crate) mod pointwise;
+pub(crate) mod quadrature;
+mod sampled;
 mod tabulated;
-pub mod validate;
+pub(crate) mod weights;
 
-pub use range::{LAMBDA_MAX, LAMBDA_MIN, WIDTH};
+pub(crate) use speclab_tables::interp;
+pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
+pub use speclab_tables::validate;
+
+pub use sampled::{SampledSpectrum, Wavelengths};
 pub use tabulated::{Tables, TabulatedSpectrum};
 pub use validate::{Interpolation, Role};

@@ -10,9 +10,13 @@
 //! **Outside its support** (below the first or above the last wavelength) a
 //! spectrum is zero.
 //!
+//! Spectra come from samples in code ([`TabulatedSpectrum::new`]), from
+//! files (`speclab::io::Load`, one floor up) or from static data made at
+//! compile time (`speclab_tables::Codegen`, as [`crate::data`] is).
+//!
 //! ```
 //! use speclab::{Role, TabulatedSpectrum};
-//! let light = TabulatedSpectrum::parse("{400, 1}, {500, 3}", "<string>", Role::Light)?;
+//! let light = TabulatedSpectrum::new(vec![400.0, 500.0], vec![1.0, 3.0], Role::Light)?;
 //! assert_eq!(light.eval(450.0), 2.0);
 //! assert_eq!(light.eval(390.0), 0.0); // outside the support
 //! assert_eq!(light.integral(400.0, 500.0), 200.0);
@@ -20,16 +24,18 @@
 //! ```
 
 use std::borrow::Cow;
+use std::fmt;
+use std::sync::{Arc, OnceLock};
 
-use crate::Error;
-use crate::io::text::Samples;
-use crate::io::{brace, read};
-use crate::sampling::weights::View;
-use crate::spectrum::grid::Grid;
+use crate::error::Error;
 use crate::spectrum::interp::{self, Coeffs};
+use crate::spectrum::lookup::UniformLookup;
+use crate::spectrum::piecewise::View;
+use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{self, Interpolation, Role};
+use crate::spectrum::weights::Weights;
 
-/// Precomputed tables of a spectrum, as [`crate::codegen`] writes them for
+/// Precomputed tables of a spectrum, as `speclab_tables::Codegen` writes them for
 /// static data: samples, the coefficients `[c0, c1, c2, c3]` of each
 /// segment's polynomial in `t = λ − λₖ`, and the breaks (samples plus clamp
 /// crossings).
@@ -50,7 +56,14 @@ pub struct Tables {
 }
 
 /// Samples of a spectrum and the interpolant through them.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// Used as a light, a spectrum keeps the exact reference weights it computes
+/// on first use (see `sampling::reference`), for the grid of the first
+/// reflectance it meets on that path: a built-in light, its clone, a scaled
+/// copy and the same light loaded from a file all take the same path, and
+/// the tables never leave the value that owns them. Equality looks at the
+/// samples and every table of the interpolant (not at what is kept).
+#[derive(Clone)]
 pub struct TabulatedSpectrum {
     role: Role,
     interpolation: Interpolation,
@@ -65,14 +78,37 @@ pub struct TabulatedSpectrum {
     /// First and last wavelength, nm: the support.
     ends: [f64; 2],
     /// O(1) segment lookup for equidistant tables. Invariant: when present,
-    /// `grid.segments() == coeffs.len() == lambda.len() − 1`.
-    grid: Option<Grid>,
+    /// `lookup.segments() == coeffs.len() == lambda.len() − 1`.
+    lookup: Option<UniformLookup>,
     /// The role's clamp interval.
     bounds: [f64; 2],
+    /// As a light: its exact reference weights, computed on first use.
+    weights: OnceLock<Arc<Weights>>,
+}
+
+impl PartialEq for TabulatedSpectrum {
+    /// Same role, interpolation, samples and interpolant tables.
+    fn eq(&self, o: &Self) -> bool {
+        (self.role, self.interpolation) == (o.role, o.interpolation)
+            && (self.lambda == o.lambda && self.values == o.values)
+            && (self.coeffs == o.coeffs && self.breaks == o.breaks)
+            && (self.prefix == o.prefix && self.clean == o.clean)
+    }
+}
+
+impl fmt::Debug for TabulatedSpectrum {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("TabulatedSpectrum")
+            .field("role", &self.role)
+            .field("interpolation", &self.interpolation)
+            .field("lambda", &self.lambda)
+            .field("values", &self.values)
+            .finish_non_exhaustive()
+    }
 }
 
 impl TabulatedSpectrum {
-    /// A spectrum over static tables, for code that [`crate::codegen`]
+    /// A spectrum over static tables, for code that `speclab_tables::Codegen`
     /// generates: the tables must be the ones it computes. `None` if their
     /// lengths do not fit together (generated code turns that into a
     /// compile-time error).
@@ -98,8 +134,9 @@ impl TabulatedSpectrum {
             prefix: Cow::Borrowed(t.prefix),
             clean: Cow::Borrowed(t.clean),
             ends: [t.lambda[0], t.lambda[n - 1]],
-            grid: Grid::of(t.lambda),
+            lookup: UniformLookup::of(t.lambda),
             bounds: role.bounds(),
+            weights: OnceLock::new(),
         })
     }
 
@@ -123,17 +160,15 @@ impl TabulatedSpectrum {
         Ok(Self::build(lambda, values, role, interpolation))
     }
 
-    /// A spectrum from brace-notation text; `origin` names the text in
-    /// errors. Unlike [`crate::io::Load`], it need not cover 380–730 nm.
-    pub fn parse(text: &str, origin: &str, role: Role) -> Result<Self, Error> {
-        let interpolation = role.interpolation();
-        let samples = read::locate(brace::parse_samples(text, origin)?, origin, role, interpolation)?;
-        Ok(Self::from_samples(samples, role, interpolation))
-    }
-
-    /// A spectrum from samples already validated for `role` and `interpolation`.
-    pub(crate) fn from_samples(s: Samples, role: Role, interpolation: Interpolation) -> Self {
-        Self::build(s.lambda, s.values, role, interpolation)
+    /// A spectrum from samples already validated for `role` and
+    /// `interpolation` (by the reader of files one floor up).
+    pub(crate) fn from_validated(
+        lambda: Vec<f64>,
+        values: Vec<f64>,
+        role: Role,
+        interpolation: Interpolation,
+    ) -> Self {
+        Self::build(lambda, values, role, interpolation)
     }
 
     fn build(lambda: Vec<f64>, values: Vec<f64>, role: Role, interpolation: Interpolation) -> Self {
@@ -147,8 +182,9 @@ impl TabulatedSpectrum {
             role,
             interpolation,
             ends: [lambda[0], lambda[lambda.len() - 1]],
-            grid: Grid::of(&lambda),
+            lookup: UniformLookup::of(&lambda),
             bounds: role.bounds(),
+            weights: OnceLock::new(),
             lambda: Cow::Owned(lambda),
             values: Cow::Owned(values),
             coeffs: Cow::Owned(coeffs),
@@ -170,10 +206,18 @@ impl TabulatedSpectrum {
         self.eval_lanes(&[lambda])[0]
     }
 
+    /// The spectrum's values at K wavelengths (a `HeroSample<K>`'s, or a
+    /// `[f64; K]`), evaluated side by side.
+    #[inline(always)]
+    #[must_use]
+    pub fn sample<const K: usize>(&self, at: &impl Wavelengths<K>) -> SampledSpectrum<K> {
+        SampledSpectrum::new(self.eval_lanes(at.lambda()))
+    }
+
     /// [`TabulatedSpectrum::eval`] at K wavelengths at once.
     #[inline(always)]
     pub(crate) fn eval_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [f64; K] {
-        let Some(grid) = self.grid else {
+        let Some(lookup) = self.lookup else {
             return self.eval_lanes_by_search(lambda);
         };
         let (coeffs, knots) = (&*self.coeffs, &*self.lambda);
@@ -181,9 +225,9 @@ impl TabulatedSpectrum {
         let linear = self.interpolation == Interpolation::Linear;
         let mut v = [0.0; K];
         for (v, &l) in v.iter_mut().zip(lambda) {
-            let k = grid.segment(l);
-            // SAFETY: k < grid.segments() == coeffs.len() < knots.len(), by
-            // the invariant of `grid` (see the field).
+            let k = lookup.segment(l);
+            // SAFETY: k < lookup.segments() == coeffs.len() < knots.len(), by
+            // the invariant of `lookup` (see the field).
             let (c, knot) = unsafe { (*coeffs.get_unchecked(k), *knots.get_unchecked(k)) };
             let t = l - knot;
             // A linear segment's c2 and c3 are 0: the same value, sooner.
@@ -235,8 +279,8 @@ impl TabulatedSpectrum {
         if x >= last {
             return self.prefix[n - 1];
         }
-        let k = match self.grid {
-            Some(grid) => grid.segment(x),
+        let k = match self.lookup {
+            Some(lookup) => lookup.segment(x),
             None => interp::segment_of(&self.lambda, x),
         };
         let knot = self.lambda[k];
@@ -284,6 +328,37 @@ impl TabulatedSpectrum {
         self.interpolation
     }
 
+    /// As a light: its exact reference weights for reflectances on `grid`
+    /// interpolated by `interpolation`, computed on first use and kept for
+    /// the first grid asked for; other grids get weights of their own.
+    pub(crate) fn weights(&self, grid: &[f64], interpolation: Interpolation) -> Arc<Weights> {
+        let compute = || Arc::new(Weights::compute(&self.view(), grid, interpolation));
+        let kept = self.weights.get_or_init(compute);
+        if kept.grid() == grid && kept.interpolation() == interpolation {
+            Arc::clone(kept)
+        } else {
+            compute()
+        }
+    }
+
+    /// The weights kept by [`TabulatedSpectrum::weights`], if they are for
+    /// reflectances like `surface` (its grid and interpolation).
+    pub(crate) fn weights_for(&self, surface: &TabulatedSpectrum) -> Option<&Weights> {
+        let kept = self.weights.get_or_init(|| {
+            Arc::new(Weights::compute(&self.view(), surface.lambda(), surface.interpolation()))
+        });
+        let fits = kept.grid() == surface.lambda() && kept.interpolation() == surface.interpolation();
+        fits.then_some(kept)
+    }
+
+    /// The degree of the polynomial pieces: 1 (linear) or 3 (cubic).
+    pub(crate) fn degree(&self) -> usize {
+        match self.interpolation {
+            Interpolation::Linear => 1,
+            Interpolation::Cubic => 3,
+        }
+    }
+
     /// The tables, borrowed, for exact integration.
     pub(crate) fn view(&self) -> View<'_> {
         View { lambda: &self.lambda, coeffs: &self.coeffs, breaks: &self.breaks, bounds: self.bounds }
@@ -313,69 +388,5 @@ impl TabulatedSpectrum {
 }
 
 #[cfg(test)]
-mod tests {
-    use rand::rngs::StdRng;
-    use rand::{RngExt, SeedableRng};
-
-    use super::*;
-    use crate::data::{A, A1, CIE_X, CIE_Y, CIE_Z, D65, E2, F4, F11, G4, H4, J4};
-
-    /// The fast path (O(1) segment, branch-free) against the reference
-    /// interpolant's definition (binary search, clamp), at 10⁵ random
-    /// wavelengths from 370 to 790 nm per spectrum: within 1e-12 relative.
-    fn agrees_with_reference(s: &TabulatedSpectrum, seed: u64) -> f64 {
-        let mut rng = StdRng::seed_from_u64(seed);
-        let mut worst = 0.0f64;
-        for _ in 0..100_000 {
-            let l = 370.0 + 420.0 * rng.random::<f64>();
-            let (fast, reference) = (s.eval(l), interp::eval(&s.lambda, &s.coeffs, s.bounds, l));
-            let gap = (fast - reference).abs();
-            assert!(gap <= 1e-12 * reference.abs(), "at {l}: {fast} vs {reference}");
-            worst = worst.max(gap / reference.abs().max(f64::MIN_POSITIVE));
-        }
-        worst
-    }
-
-    #[test]
-    fn fast_path_is_the_reference_interpolant() {
-        for (i, s) in
-            [&A, &D65, &F11, &E2, &F4, &G4, &H4, &J4, &A1, &CIE_X, &CIE_Y, &CIE_Z].into_iter().enumerate()
-        {
-            assert!(s.grid.is_some(), "built-in tables are equidistant");
-            agrees_with_reference(s, i as u64);
-        }
-    }
-
-    #[test]
-    fn non_uniform_spectrum_takes_the_search() {
-        let lambda = vec![380.0, 390.0, 415.0, 470.0, 555.0, 600.0, 610.0, 690.0, 730.0];
-        let values = vec![0.1, 0.3, 0.2, 0.9, 0.99, 0.4, 0.05, 0.5, 0.7];
-        let s = TabulatedSpectrum::new(lambda, values, Role::Reflectance).expect("valid");
-        assert!(s.grid.is_none());
-        agrees_with_reference(&s, 99);
-        assert_eq!(s.eval(f64::NAN), 0.0);
-        assert_eq!(s.eval(379.999), 0.0);
-        assert!((s.eval(730.0) - 0.7).abs() < 1e-15, "the cubic at its last knot, to rounding");
-    }
-
-    /// The cumulative integral (prefix + primitive) equals direct exact
-    /// integration, on clean and clamped segments alike.
-    #[test]
-    fn cumulative_is_the_exact_integral() {
-        let overshooting = TabulatedSpectrum::new(
-            (0..36).map(|i| 380.0 + 10.0 * f64::from(i)).collect(),
-            (0..36).map(|i| if i % 3 == 0 { 1.0 } else { 0.02 }).collect(),
-            Role::Reflectance,
-        )
-        .expect("valid");
-        assert!(overshooting.clean.contains(&false), "the clamp acts somewhere");
-        for s in [&F11, &G4, &CIE_Z, &overshooting] {
-            for i in 0..=700 {
-                let x = 375.0 + 0.5 * f64::from(i);
-                let direct = interp::integral(&s.lambda, &s.coeffs, &s.breaks, s.bounds, s.ends[0], x);
-                let fast = s.cumulative(x);
-                assert!((fast - direct).abs() <= 1e-12 * direct.abs().max(1.0), "at {x}: {fast} vs {direct}");
-            }
-        }
-    }
-}
+#[path = "tabulated_tests.rs"]
+mod tests;

@@ -5,8 +5,10 @@
 //! The charted methods are [`curves`]: the assignment's random and hero,
 //! hero with each strata and with each pdf, centre and box buckets, and the
 //! reference as a single point. Random and hero run
-//! n = 1, 2, 4, … [`MAX_N`]; buckets every M up to 64. `examples/chart/main.rs`
-//! draws the points; a method added to [`curves`] appears there unchanged.
+//! n = 1, 2, 4, … [`CHART_MAX_N`]; buckets every M up to 64. The `chart`
+//! tool (`tools/src/bin/chart.rs`) draws the points; a method added to
+//! [`curves`] appears there unchanged. Costs are measured now
+//! ([`points`]) or passed in ([`points_with_costs`], as the tests do).
 //!
 //! ```
 //! use speclab::study::chart::pareto;
@@ -16,17 +18,16 @@
 
 use std::num::NonZeroUsize;
 
-use crate::Error;
-use crate::sampling::regular::MAX_BUCKETS;
 use crate::sampling::strata::Strata;
 use crate::study::cost::{self, Config, Cost};
+use crate::study::error::StudyError;
 use crate::study::method::Method;
 use crate::study::sampling::{Pdf, Sampling};
 use crate::study::scene::Named;
 use crate::study::trials;
 
 /// The largest n charted for random and hero.
-pub const MAX_N: usize = 1024;
+pub const CHART_MAX_N: usize = 1024;
 
 /// The charted methods, one curve each (the reference is one point): the
 /// assignment's random, hero with every strata under the uniform pdf, hero
@@ -39,17 +40,17 @@ pub fn curves() -> Vec<Method> {
     let mut out = vec![Method::Reference, Method::RANDOM];
     out.extend(Strata::ALL.map(|strata| hero(Pdf::Uniform, strata)));
     out.extend(Pdf::ALL.into_iter().filter(|&p| p != Pdf::Uniform).map(|pdf| hero(pdf, Strata::Jittered)));
-    out.extend([Method::RegularCentre, Method::RegularBox]);
+    out.extend([Method::CENTER, Method::BOX]);
     out
 }
 
-/// The counts charted for `method`.
+/// The counts charted for `method`: [`Method::counts`] up to
+/// [`CHART_MAX_N`], and the reference's one point.
 #[must_use]
-pub fn counts(method: Method) -> Vec<usize> {
+pub fn chart_counts(method: Method) -> Vec<usize> {
     match method {
         Method::Reference => vec![1],
-        Method::RegularCentre | Method::RegularBox => (1..=MAX_BUCKETS).collect(),
-        _ => std::iter::successors(Some(1), |n| Some(n * 2)).take_while(|&n| n <= MAX_N).collect(),
+        _ => method.counts(CHART_MAX_N),
     }
 }
 
@@ -85,13 +86,30 @@ pub fn points(
     methods: &[Method],
     trials: NonZeroUsize,
     seed: u64,
-) -> Result<Vec<Point>, Error> {
-    let first = surfaces.first().ok_or(Error::EmptyScene)?;
+) -> Result<Vec<Point>, StudyError> {
+    let first = surfaces.first().ok_or(StudyError::EmptyScene)?;
+    let measure = |config| cost::measure(config, &light.spectrum, &first.spectrum);
+    points_with_costs(light, surfaces, methods, trials, seed, measure)
+}
+
+/// [`points`] with each configuration's cost given by `cost` instead of
+/// measured on the light × the first surface.
+pub fn points_with_costs(
+    light: &Named,
+    surfaces: &[Named],
+    methods: &[Method],
+    trials: NonZeroUsize,
+    seed: u64,
+    mut cost: impl FnMut(Config) -> Result<Cost, StudyError>,
+) -> Result<Vec<Point>, StudyError> {
+    if surfaces.is_empty() {
+        return Err(StudyError::EmptyScene);
+    }
     let mut out = Vec::new();
     for &method in methods {
-        for count in counts(method) {
+        for count in chart_counts(method) {
             let config = Config::new(method, NonZeroUsize::new(count).unwrap_or(NonZeroUsize::MIN));
-            let cost = cost::measure(config, &light.spectrum, &first.spectrum)?;
+            let cost = cost(config)?;
             let mut rms = Vec::with_capacity(surfaces.len());
             let mut ran = 1;
             for s in surfaces {
@@ -177,8 +195,8 @@ mod tests {
             let hero = Method::HERO.with_sampling(Sampling { pdf, strata: Strata::Jittered });
             assert!(curves.contains(&hero), "{hero:?}");
         }
-        assert_eq!(counts(Method::HERO), [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]);
-        assert_eq!(counts(Method::RegularBox), (1..=64).collect::<Vec<_>>());
-        assert_eq!(counts(Method::Reference), [1]);
+        assert_eq!(chart_counts(Method::HERO), [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]);
+        assert_eq!(chart_counts(Method::BOX), (1..=64).collect::<Vec<_>>());
+        assert_eq!(chart_counts(Method::Reference), [1]);
     }
 }

@@ -3,32 +3,35 @@
 //! over many trials, RMS ΔE00.
 //!
 //! ```
-//! use speclab::study::compare::{self, Settings};
+//! use speclab::study::compare::{self, CompareOptions};
 //! use speclab::study::scene::Choice;
 //! use speclab::Role;
 //! let light = Choice::Name("F11".into()).resolve(Role::Light)?;
 //! let patch = Choice::Name("G4".into()).resolve(Role::Reflectance)?;
-//! let lines = compare::compare(&light, &patch, &Settings::default())?;
+//! let lines = compare::compare(&light, &patch, &CompareOptions::default())?;
 //! assert_eq!(lines[0].label, "reference");
 //! assert_eq!(lines[0].de00, 0.0);
 //! assert_eq!(lines.len(), 5);
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::num::NonZeroUsize;
 
+use crate::color::LinearSrgb;
+use crate::sampling::buckets::BucketRule;
+use crate::sampling::hero::USUAL_K;
 use crate::sampling::reference;
-use crate::study::method::{HERO_K, Method};
+use crate::study::error::StudyError;
+use crate::study::method::Method;
 use crate::study::perceptual;
 use crate::study::remarks::Viewing;
 use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
 use crate::study::trials;
-use crate::{Error, LinearSrgb};
 
 /// What to compare, and how.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Settings {
+pub struct CompareOptions {
     /// Samples for random and hero.
     pub n: NonZeroUsize,
     /// Buckets for the regular methods.
@@ -45,12 +48,12 @@ pub struct Settings {
     pub viewing: Viewing,
 }
 
-impl Default for Settings {
+impl Default for CompareOptions {
     /// n = 100, M = 16, K = 4, seed 1, 200 trials, as Appendix 2.
     fn default() -> Self {
         let nz = |n| NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
-        let (k, sampling, viewing) = (HERO_K, Sampling::DEFAULT, Viewing::default());
-        Settings { n: nz(100), m: nz(16), k, sampling, seed: 1, trials: nz(200), viewing }
+        let (k, sampling, viewing) = (USUAL_K, Sampling::DEFAULT, Viewing::default());
+        CompareOptions { n: nz(100), m: nz(16), k, sampling, seed: 1, trials: nz(200), viewing }
     }
 }
 
@@ -70,14 +73,14 @@ pub struct Line {
 }
 
 /// The reference, random, hero, centre and box lines for `light × surface`.
-pub fn compare(light: &Named, surface: &Named, s: &Settings) -> Result<Vec<Line>, Error> {
+pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec<Line>, StudyError> {
     let (l, r) = (&light.spectrum, &surface.spectrum);
     let techniques = [
         (Method::Reference, s.n, "reference".to_string()),
         (Method::Random { sampling: s.sampling }, s.n, format!("random n={}", s.n)),
         (Method::Hero { k: s.k, sampling: s.sampling }, s.n, format!("hero n={} K={}", s.n, s.k)),
-        (Method::RegularCentre, s.m, format!("centre M={}", s.m)),
-        (Method::RegularBox, s.m, format!("box M={}", s.m)),
+        (Method::Buckets { rule: BucketRule::Center }, s.m, format!("center M={}", s.m)),
+        (Method::Buckets { rule: BucketRule::BoxAverage }, s.m, format!("box M={}", s.m)),
     ];
     let white = s.viewing.white(l);
     let exact = s.viewing.adapt(reference::xyz(l, r), l);

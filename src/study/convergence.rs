@@ -1,29 +1,31 @@
 //! Accuracy in sequence: every method at increasing sample counts, each
 //! over many trials, and where each crosses an error threshold.
 //!
-//! Random and hero use n = 1, 2, 4, … 4096 (powers of two), once for each
-//! pdf × strata asked for; regular buckets every M from 1 to 64. [`crossing`] reads, per light and method, the
-//! worst RMS ΔE00 over the light's surfaces at each count, and reports the
-//! first count below a threshold and the count from which it stays below.
+//! Random and hero use n = 1, 2, 4, … [`CONVERGENCE_MAX_N`] (powers of
+//! two), once for each pdf × strata asked for; regular buckets every M from
+//! 1 to 64 ([`Method::counts`]). [`crossing`] reads, per light and method,
+//! the worst RMS ΔE00 over the light's surfaces at each count, and reports
+//! the first count below a threshold and the count from which it stays
+//! below.
 //!
 //! ```
 //! use std::num::NonZeroUsize;
-//! use speclab::study::convergence::{self, counts};
+//! use speclab::study::convergence::{self, CONVERGENCE_MAX_N};
 //! use speclab::study::{method::Method, sampling::Sampling, scene::Choice};
 //! use speclab::Role;
 //! let light = Choice::Name("D65".into()).resolve(Role::Light)?;
 //! let patch = Choice::Name("A1".into()).resolve(Role::Reflectance)?;
 //! let rows = convergence::sequence(&light, &patch, &[Sampling::DEFAULT], NonZeroUsize::new(20).unwrap(), 1)?;
-//! assert_eq!(rows.len(), 2 * counts(Method::RANDOM).len() + 2 * counts(Method::RegularBox).len());
-//! let boxed = convergence::crossing(&rows, "D65", Method::RegularBox, 1.0);
+//! let counts = |m: Method| m.counts(CONVERGENCE_MAX_N).len();
+//! assert_eq!(rows.len(), 2 * counts(Method::RANDOM) + 2 * counts(Method::BOX));
+//! let boxed = convergence::crossing(&rows, "D65", Method::BOX, 1.0);
 //! assert!(boxed.first.is_some() && boxed.stable >= boxed.first);
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::num::NonZeroUsize;
 
-use crate::Error;
-use crate::sampling::regular::MAX_BUCKETS;
+use crate::study::error::StudyError;
 use crate::study::method::Method;
 use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
@@ -37,30 +39,16 @@ pub fn methods(samplings: &[Sampling]) -> Vec<Method> {
     let random = [Method::RANDOM, Method::HERO];
     let mut out: Vec<Method> =
         random.iter().flat_map(|m| samplings.iter().map(|&s| m.with_sampling(s))).collect();
-    out.extend([Method::RegularCentre, Method::RegularBox]);
+    out.extend([Method::CENTER, Method::BOX]);
     out
 }
 
 /// The largest n studied for random and hero: 2¹² = 4096.
-pub const MAX_N: usize = 1 << 12;
-
-/// The sample counts studied for `method`: powers of two up to [`MAX_N`]
-/// for random and hero, every M up to [`MAX_BUCKETS`] for buckets, none for
-/// the reference.
-#[must_use]
-pub fn counts(method: Method) -> Vec<usize> {
-    match method {
-        Method::Random { .. } | Method::Hero { .. } => {
-            std::iter::successors(Some(1), |n| Some(n * 2)).take_while(|&n| n <= MAX_N).collect()
-        }
-        Method::RegularCentre | Method::RegularBox => (1..=MAX_BUCKETS).collect(),
-        Method::Reference => Vec::new(),
-    }
-}
+pub const CONVERGENCE_MAX_N: usize = 1 << 12;
 
 /// One count of one method on one light × surface.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Row {
+pub struct ConvergenceRow {
     /// The light's name.
     pub light: String,
     /// The surface's name.
@@ -73,22 +61,23 @@ pub struct Row {
     pub stats: Stats,
 }
 
-/// Every method of [`methods`] at every count of [`counts`], on
-/// `light × surface`, with `trials` trials per random row.
+/// Every method of [`methods`] at every count it studies
+/// ([`Method::counts`] up to [`CONVERGENCE_MAX_N`]), on `light × surface`,
+/// with `trials` trials per random row.
 pub fn sequence(
     light: &Named,
     surface: &Named,
     samplings: &[Sampling],
     trials: NonZeroUsize,
     seed: u64,
-) -> Result<Vec<Row>, Error> {
+) -> Result<Vec<ConvergenceRow>, StudyError> {
     let mut rows = Vec::new();
     for method in methods(samplings) {
-        for samples in counts(method) {
+        for samples in method.counts(CONVERGENCE_MAX_N) {
             let n = NonZeroUsize::new(samples).unwrap_or(NonZeroUsize::MIN);
             let stats = trials::method(&light.spectrum, &surface.spectrum, method, n, trials, seed)?;
             let (light, surface) = (light.name.clone(), surface.name.clone());
-            rows.push(Row { light, surface, method, samples, stats });
+            rows.push(ConvergenceRow { light, surface, method, samples, stats });
         }
     }
     Ok(rows)
@@ -97,12 +86,13 @@ pub fn sequence(
 /// Per count of `method` under `light`, the worst RMS ΔE00 over the light's
 /// surfaces in `rows`; counts missing any surface are left out.
 #[must_use]
-pub fn worst_over_surfaces(rows: &[Row], light: &str, method: Method) -> Vec<(usize, f64)> {
+pub fn worst_over_surfaces(rows: &[ConvergenceRow], light: &str, method: Method) -> Vec<(usize, f64)> {
     let mut surfaces: Vec<&str> =
         rows.iter().filter(|r| r.light == light).map(|r| r.surface.as_str()).collect();
     surfaces.sort_unstable();
     surfaces.dedup();
-    counts(method)
+    method
+        .counts(CONVERGENCE_MAX_N)
         .into_iter()
         .filter_map(|n| {
             let cell: Vec<f64> = rows
@@ -119,6 +109,6 @@ pub fn worst_over_surfaces(rows: &[Row], light: &str, method: Method) -> Vec<(us
 /// Where `method` under `light` gets below `threshold` RMS ΔE00 for all of
 /// the light's surfaces at once: first, and for good.
 #[must_use]
-pub fn crossing(rows: &[Row], light: &str, method: Method, threshold: f64) -> Crossing {
+pub fn crossing(rows: &[ConvergenceRow], light: &str, method: Method, threshold: f64) -> Crossing {
     threshold::crossing(&worst_over_surfaces(rows, light, method), threshold)
 }

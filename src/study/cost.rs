@@ -13,12 +13,12 @@
 //!
 //! ```
 //! use std::num::NonZeroUsize;
-//! use speclab::{data, study::{cost::{self, Config}, method::Method}};
+//! use speclab::{data::{lights, patches}, study::{cost::{self, Config}, method::Method}};
 //! let hero = Config::new(Method::HERO, NonZeroUsize::new(16).unwrap());
-//! let c = cost::measure(hero, &data::D65, &data::A1)?;
+//! let c = cost::measure(hero, &lights::D65, &patches::A1)?;
 //! assert!(c.per_estimate_ns > 0.0);
-//! assert_eq!(hero.to_string(), "hero uniform/independent n=16");
-//! # Ok::<(), speclab::Error>(())
+//! assert_eq!(hero.to_string(), "hero uniform/none n=16");
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::fmt;
@@ -29,9 +29,10 @@ use std::time::Instant;
 use rand::SeedableRng;
 use rand::rngs::StdRng;
 
-use crate::sampling::regular::{self, Bucketing, RegularSpectrum, Rule, WithBuckets};
+use crate::sampling::buckets::Buckets;
+use crate::spectrum::TabulatedSpectrum;
+use crate::study::error::StudyError;
 use crate::study::method::Method;
-use crate::{Error, TabulatedSpectrum};
 
 /// A method with its sample count n or bucket count M.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -55,12 +56,10 @@ impl fmt::Display for Config {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.method {
             Method::Reference => write!(f, "reference"),
-            Method::RegularCentre | Method::RegularBox => {
-                write!(f, "{} M={}", self.method.name(), self.count)
-            }
+            Method::Buckets { .. } => write!(f, "{} M={}", self.method, self.count),
             m => {
                 let sampling = m.sampling().unwrap_or_default();
-                write!(f, "{} {sampling} n={}", m.name(), self.count)
+                write!(f, "{m} {sampling} n={}", self.count)
             }
         }
     }
@@ -75,43 +74,34 @@ pub struct Cost {
     pub preparation_ns: f64,
 }
 
-/// The cost of `config` on `light × surface`.
+/// The cost of `config` on `light × surface`. Preparation is what is done
+/// once per light (a pdf table, built now) or per spectrum (its M bucket
+/// values); per estimate, what a renderer repeats.
 pub fn measure(
     config: Config,
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
-) -> Result<Cost, Error> {
-    let rule = match config.method {
-        Method::RegularCentre => Rule::Centre,
-        Method::RegularBox => Rule::BoxAverage,
-        method => {
-            let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
-            let prepared = method.prepare(light)?;
-            let mut rng = StdRng::seed_from_u64(0x5EED);
-            let per_estimate_ns =
-                median_ns(|| drop(black_box(prepared.xyz_with_rng(surface, config.count, &mut rng))));
-            return Ok(Cost { per_estimate_ns, preparation_ns });
-        }
+) -> Result<Cost, StudyError> {
+    let Method::Buckets { rule } = config.method else {
+        let method = config.method;
+        let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
+        let prepared = method.prepare(light)?;
+        let mut rng = StdRng::seed_from_u64(0x5EED);
+        let per_estimate_ns =
+            median_ns(|| drop(black_box(prepared.xyz_with_rng(surface, config.count, &mut rng))));
+        return Ok(Cost { per_estimate_ns, preparation_ns });
     };
-    struct Timed<'a>(&'a TabulatedSpectrum, &'a TabulatedSpectrum);
-    impl WithBuckets for Timed<'_> {
-        type Output = Cost;
-        fn run<const M: usize, B: Bucketing<M>>(self) -> Cost {
-            let bucket = |s| RegularSpectrum::<M, B>::from_spectrum(black_box(s));
-            let preparation_ns = median_ns(|| {
-                black_box((bucket(self.0), bucket(self.1)));
-            });
-            let (l, s) = (bucket(self.0), bucket(self.1));
-            // Through references, so the timing holds the product and the
-            // conversion, not copies of the buckets into black_box.
-            let per_estimate_ns = median_ns(|| {
-                let (l, s) = (black_box(&l), black_box(&s));
-                black_box((*l * *s).to_xyz());
-            });
-            Cost { per_estimate_ns, preparation_ns }
-        }
-    }
-    regular::with_buckets(config.count.get(), rule, Timed(light, surface))
+    let buckets = Buckets::new(config.count.get(), rule)?;
+    let (mut l, mut s) = (vec![0.0; buckets.m()], vec![0.0; buckets.m()]);
+    let preparation_ns = median_ns(|| {
+        rule.values_into(black_box(light), &mut l);
+        rule.values_into(black_box(surface), &mut s);
+        black_box((&l, &s));
+    });
+    let per_estimate_ns = median_ns(|| {
+        black_box(buckets.xyz_of_product(&[black_box(&l), black_box(&s)]));
+    });
+    Ok(Cost { per_estimate_ns, preparation_ns })
 }
 
 /// The median over 7 timings of `f`'s duration, ns, after a warm-up; each
@@ -121,8 +111,7 @@ fn median_ns(mut f: impl FnMut()) -> f64 {
     f();
     f();
     // The calibration sets only how long each timing lasts, not what it
-    // reports: another estimate of `once` or `repeats` gives the same
-    // figures, noisier (so mutants of these two lines are equivalent).
+    // reports.
     let once = start.elapsed().as_secs_f64() / 2.0;
     let repeats = ((2e-4 / once.max(1e-9)).ceil() as usize).clamp(1, 1 << 20);
     let times: Vec<f64> = (0..7)
@@ -155,9 +144,9 @@ mod tests {
     #[test]
     fn names_and_arithmetic() {
         let n = |k| NonZeroUsize::new(k).unwrap();
-        assert_eq!(Config::new(Method::RegularBox, n(39)).to_string(), "regular-box M=39");
+        assert_eq!(Config::new(Method::BOX, n(39)).to_string(), "regular-box M=39");
         assert_eq!(Config::new(Method::Reference, n(1)).to_string(), "reference");
-        assert_eq!(Config::new(Method::RANDOM, n(8)).to_string(), "random uniform/independent n=8");
+        assert_eq!(Config::new(Method::RANDOM, n(8)).to_string(), "random uniform/none n=8");
         assert_eq!(ns_per_call(2e-4, 50), 4000.0);
         assert_eq!(median(vec![5.0, 1.0, 4.0, 2.0, 3.0, 7.0, 6.0]), 4.0);
     }

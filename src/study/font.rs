@@ -14,14 +14,14 @@
 //! ```
 
 /// Glyph width in pixels.
-pub const WIDTH: usize = 5;
+pub const GLYPH_WIDTH: usize = 5;
 /// Glyph height in pixels.
-pub const HEIGHT: usize = 7;
+pub const GLYPH_HEIGHT: usize = 7;
 /// Horizontal distance from one glyph to the next: one pixel of space.
-pub const ADVANCE: usize = WIDTH + 1;
+pub const ADVANCE: usize = GLYPH_WIDTH + 1;
 
 /// One glyph: seven rows of five pixels, `#` is ink.
-pub type Glyph = [&'static str; HEIGHT];
+pub type Glyph = [&'static str; GLYPH_HEIGHT];
 
 #[rustfmt::skip]
 const GLYPHS: [(char, Glyph); 57] = [
@@ -89,7 +89,7 @@ const GLYPHS: [(char, Glyph); 57] = [
 pub fn glyph(c: char) -> Glyph {
     let c = c.to_ascii_uppercase();
     let find = |c: char| GLYPHS.iter().find(|(g, _)| *g == c).map(|(_, rows)| *rows);
-    find(c).or_else(|| find('?')).unwrap_or([""; HEIGHT])
+    find(c).or_else(|| find('?')).unwrap_or([""; GLYPH_HEIGHT])
 }
 
 /// True if pixel `(x, y)` of `glyph` is ink (`x` from the left, `y` from
@@ -113,10 +113,10 @@ mod tests {
     fn every_glyph_is_five_by_seven_of_ink_and_blank() {
         for (c, rows) in GLYPHS {
             assert!(
-                rows.iter().all(|r| r.len() == WIDTH && r.bytes().all(|b| b == b'#' || b == b'.')),
+                rows.iter().all(|r| r.len() == GLYPH_WIDTH && r.bytes().all(|b| b == b'#' || b == b'.')),
                 "{c}"
             );
-            let inked = (0..WIDTH).any(|x| (0..HEIGHT).any(|y| ink(rows, x, y)));
+            let inked = (0..GLYPH_WIDTH).any(|x| (0..GLYPH_HEIGHT).any(|y| ink(rows, x, y)));
             assert_eq!(inked, c != ' ', "{c}");
         }
         let chars: Vec<char> = GLYPHS.iter().map(|(c, _)| *c).collect();

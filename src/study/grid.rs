@@ -6,25 +6,26 @@
 //! `derive_seed(seed, 2c)` (random) and `derive_seed(seed, 2c + 1)` (hero).
 //!
 //! ```
-//! use speclab::study::grid::Grid;
+//! use speclab::study::grid::GridOptions;
 //! use speclab::study::scene::{builtin_lights, builtin_surfaces};
 //! let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
-//! let rows = Grid::default().rows(&lights, &surfaces)?;
+//! let rows = GridOptions::default().rows(&lights, &surfaces)?;
 //! assert_eq!(rows.len(), 18 * 5);
 //! assert_eq!(rows[5].light.name, "A");
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::num::NonZeroUsize;
 
+use crate::color::Xyz;
+use crate::study::error::StudyError;
 use crate::study::method::{Method, derive_seed};
 use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
-use crate::{Error, Xyz};
 
-/// Settings of a grid run.
+/// What a grid run computes: its counts, seed and sampling.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Grid {
+pub struct GridOptions {
     /// Samples n for random and hero.
     pub n: NonZeroUsize,
     /// Buckets M for the regular methods.
@@ -35,10 +36,10 @@ pub struct Grid {
     pub sampling: Sampling,
 }
 
-impl Default for Grid {
+impl Default for GridOptions {
     /// n = 100, M = 16, seed 1, uniform and independent wavelengths.
     fn default() -> Self {
-        Grid {
+        GridOptions {
             n: NonZeroUsize::new(100).unwrap_or(NonZeroUsize::MIN),
             m: NonZeroUsize::new(16).unwrap_or(NonZeroUsize::MIN),
             seed: 1,
@@ -49,7 +50,7 @@ impl Default for Grid {
 
 /// One cell of the grid under one method.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Row<'a> {
+pub struct GridRow<'a> {
     /// The light.
     pub light: &'a Named,
     /// The surface.
@@ -62,10 +63,14 @@ pub struct Row<'a> {
     pub xyz: Xyz,
 }
 
-impl Grid {
+impl GridOptions {
     /// All rows: for each light, each surface, each method in
-    /// [`Method::ALL`] (random and hero drawing as [`Grid::sampling`] says).
-    pub fn rows<'a>(&self, lights: &'a [Named], surfaces: &'a [Named]) -> Result<Vec<Row<'a>>, Error> {
+    /// [`Method::ALL`] (random and hero drawing as [`GridOptions::sampling`] says).
+    pub fn rows<'a>(
+        &self,
+        lights: &'a [Named],
+        surfaces: &'a [Named],
+    ) -> Result<Vec<GridRow<'a>>, StudyError> {
         let mut rows = Vec::with_capacity(lights.len() * surfaces.len() * Method::ALL.len());
         let methods = Method::ALL.map(|m| m.with_sampling(self.sampling));
         let mut cell = 0u64;
@@ -81,7 +86,7 @@ impl Grid {
                     };
                     let xyz = prepared.xyz(&surface.spectrum, samples, seed)?;
                     let samples = method.reported_samples(samples);
-                    rows.push(Row { light, surface, method, samples, xyz });
+                    rows.push(GridRow { light, surface, method, samples, xyz });
                 }
                 cell += 1;
             }

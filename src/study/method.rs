@@ -1,41 +1,47 @@
-//! The five ways of computing a colour, behind one call.
+//! The ways of computing a colour, behind one call.
 //!
 //! | method | wavelengths | `samples` means |
 //! |---|---|---|
 //! | `reference` | exact integration | (ignored; reported as 0) |
 //! | `random` | n × 1 wavelength | n |
 //! | `hero` | n × K (hero + K − 1 rotations; K = 4 by default) | n |
-//! | `regular-centre` | M bucket centres | M |
+//! | `regular-center` | M bucket centers | M |
 //! | `regular-box` | M bucket means | M |
 //!
 //! Random and hero draw their wavelengths as their [`Sampling`] says (a pdf
 //! and a strata; uniform and independent by default, as the assignment).
 //! They draw from `StdRng::seed_from_u64(seed)`, so a seed fixes the
 //! result. Use [`derive_seed`] to give independent runs their own seeds.
+//! Buckets take any M from 1 to [`MAX_BUCKETS`] at run time
+//! ([`Buckets`]), with the same numbers as `RegularSpectrum<M>`.
 //!
 //! ```
 //! use std::num::NonZeroUsize;
-//! use speclab::{data, study::method::Method};
+//! use speclab::{data::{lights, patches}, study::method::Method};
 //! let n = NonZeroUsize::new(100).unwrap();
-//! let a = Method::HERO.xyz(&data::A, &data::E2, n, 7)?;
-//! assert_eq!(a, Method::HERO.xyz(&data::A, &data::E2, n, 7)?);
-//! assert_eq!(Method::from_name("regular-box"), Some(Method::RegularBox));
+//! let a = Method::HERO.xyz(&lights::A, &patches::E2, n, 7)?;
+//! assert_eq!(a, Method::HERO.xyz(&lights::A, &patches::E2, n, 7)?);
+//! assert_eq!("regular-box".parse::<Method>()?, Method::BOX);
 //! assert_eq!(Method::HERO.evaluations(n), 400);
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
+use std::fmt;
 use std::num::NonZeroUsize;
+use std::str::FromStr;
 
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
-use crate::sampling::regular::{self, Rule};
-use crate::sampling::{hero, reference};
-use crate::study::sampling::{AnyPdf, Sampling};
-use crate::{Error, TabulatedSpectrum, Xyz};
-
-/// The usual hero width: four wavelengths per sample.
-pub const HERO_K: usize = 4;
+use crate::color::Xyz;
+use crate::error::Error;
+use crate::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
+use crate::sampling::hero::{self, USUAL_K};
+use crate::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
+use crate::sampling::reference;
+use crate::spectrum::TabulatedSpectrum;
+use crate::study::error::StudyError;
+use crate::study::sampling::{Pdf, Sampling};
 
 /// How wavelengths are chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -55,41 +61,29 @@ pub enum Method {
         /// Their pdf and strata.
         sampling: Sampling,
     },
-    /// `RegularSpectrum<M, Centre>`.
-    RegularCentre,
-    /// `RegularSpectrum<M, BoxAverage>`.
-    RegularBox,
+    /// M buckets (`RegularSpectrum<M, B>`; [`Buckets`] at run time).
+    Buckets {
+        /// Center samples or box means.
+        rule: BucketRule,
+    },
 }
 
 impl Method {
     /// Random sampling as the assignment has it: uniform, independent.
     pub const RANDOM: Method = Method::Random { sampling: Sampling::DEFAULT };
 
-    /// Hero sampling of the usual width, [`HERO_K`], uniform, independent.
-    pub const HERO: Method = Method::Hero { k: HERO_K, sampling: Sampling::DEFAULT };
+    /// Hero sampling of the usual width, [`USUAL_K`], uniform, independent.
+    pub const HERO: Method = Method::Hero { k: USUAL_K, sampling: Sampling::DEFAULT };
+
+    /// Center buckets.
+    pub const CENTER: Method = Method::Buckets { rule: BucketRule::Center };
+
+    /// Box buckets.
+    pub const BOX: Method = Method::Buckets { rule: BucketRule::BoxAverage };
 
     /// The assignment's five methods, reference first.
     pub const ALL: [Method; 5] =
-        [Method::Reference, Method::RANDOM, Method::HERO, Method::RegularCentre, Method::RegularBox];
-
-    /// The name used in tables and CSV (`hero` for any K; the sampling has
-    /// columns of its own).
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::Reference => "reference",
-            Method::Random { .. } => "random",
-            Method::Hero { .. } => "hero",
-            Method::RegularCentre => "regular-centre",
-            Method::RegularBox => "regular-box",
-        }
-    }
-
-    /// The method with this name, sampling uniform and independent.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<Method> {
-        Method::ALL.into_iter().find(|m| m.name() == name)
-    }
+        [Method::Reference, Method::RANDOM, Method::HERO, Method::CENTER, Method::BOX];
 
     /// The same method drawing wavelengths as `sampling` says (no change
     /// for the deterministic methods).
@@ -133,43 +127,92 @@ impl Method {
         }
     }
 
-    /// This method ready for `light`: its pdf built once (see
+    /// The counts a sequence studies: powers of two up to `max_n` for
+    /// random and hero, every M up to [`MAX_BUCKETS`] for buckets, none for
+    /// the reference.
+    #[must_use]
+    pub fn counts(self, max_n: usize) -> Vec<usize> {
+        match self {
+            Method::Random { .. } | Method::Hero { .. } => {
+                std::iter::successors(Some(1usize), |&n| n.checked_mul(2))
+                    .take_while(|&n| n <= max_n)
+                    .collect()
+            }
+            Method::Buckets { .. } => (1..=MAX_BUCKETS).collect(),
+            Method::Reference => Vec::new(),
+        }
+    }
+
+    /// This method ready for `light`: its pdf table built once (see
     /// [`Prepared::xyz`]).
-    pub fn prepare(self, light: &TabulatedSpectrum) -> Result<Prepared<'_>, Error> {
-        let pdf = match self.sampling() {
-            Some(s) => Some(s.pdf.build(light)?),
+    pub fn prepare(self, light: &TabulatedSpectrum) -> Result<Prepared<'_>, StudyError> {
+        let table = match self.sampling() {
+            Some(s) => s.pdf.table(light)?,
             None => None,
         };
-        Ok(Prepared { method: self, light, pdf })
+        Ok(Prepared { method: self, light, table })
     }
 
     /// XYZ of `light × surface` by this method with `samples` samples or
     /// buckets. Errors for a hero width or bucket count that is not compiled
-    /// ([`hero::WIDTHS`], 1 to [`regular::MAX_BUCKETS`]), and for a pdf that
-    /// cannot follow the light.
+    /// ([`hero::WIDTHS`], 1 to [`MAX_BUCKETS`]), and for a pdf that cannot
+    /// follow the light.
     pub fn xyz(
         self,
         light: &TabulatedSpectrum,
         surface: &TabulatedSpectrum,
         samples: NonZeroUsize,
         seed: u64,
-    ) -> Result<Xyz, Error> {
+    ) -> Result<Xyz, StudyError> {
         self.prepare(light)?.xyz(surface, samples, seed)
     }
 }
 
-/// A method with its pdf built for one light.
+impl fmt::Display for Method {
+    /// The name used in tables and CSV: `reference`, `random`, `hero` (any
+    /// K; the sampling has columns of its own), `regular-center`,
+    /// `regular-box`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Method::Reference => "reference",
+            Method::Random { .. } => "random",
+            Method::Hero { .. } => "hero",
+            Method::Buckets { rule: BucketRule::Center } => "regular-center",
+            Method::Buckets { rule: BucketRule::BoxAverage } => "regular-box",
+        })
+    }
+}
+
+impl FromStr for Method {
+    type Err = Error;
+    /// The method with this name (any case), sampling uniform and independent.
+    fn from_str(name: &str) -> Result<Method, Error> {
+        let found = Method::ALL.into_iter().find(|m| m.to_string().eq_ignore_ascii_case(name));
+        found.ok_or_else(|| Error::UnknownName {
+            what: "a method",
+            expected: &["reference", "random", "hero", "regular-center", "regular-box"],
+            found: name.to_string(),
+        })
+    }
+}
+
+/// A method with its pdf table built for one light.
 #[derive(Clone, Debug)]
 pub struct Prepared<'a> {
     method: Method,
     light: &'a TabulatedSpectrum,
-    pdf: Option<AnyPdf>,
+    table: Option<LightPdf>,
 }
 
 impl Prepared<'_> {
     /// XYZ of the light × `surface` with `samples` samples or buckets, the
     /// random methods seeded with `seed`.
-    pub fn xyz(&self, surface: &TabulatedSpectrum, samples: NonZeroUsize, seed: u64) -> Result<Xyz, Error> {
+    pub fn xyz(
+        &self,
+        surface: &TabulatedSpectrum,
+        samples: NonZeroUsize,
+        seed: u64,
+    ) -> Result<Xyz, StudyError> {
         self.xyz_with_rng(surface, samples, &mut StdRng::seed_from_u64(seed))
     }
 
@@ -179,19 +222,53 @@ impl Prepared<'_> {
         surface: &TabulatedSpectrum,
         samples: NonZeroUsize,
         rng: &mut R,
-    ) -> Result<Xyz, Error> {
+    ) -> Result<Xyz, StudyError> {
         let light = self.light;
-        let pdf = self.pdf.as_ref().unwrap_or(&AnyPdf::Uniform);
-        match self.method {
-            Method::Reference => Ok(reference::xyz(light, surface)),
-            Method::Random { sampling } => {
-                Ok(hero::estimate_with::<1, _>(light, surface, samples, pdf, sampling.strata, rng))
-            }
-            Method::Hero { k, sampling } => {
-                hero::estimate_dyn(k, light, surface, samples, pdf, sampling.strata, rng)
-            }
-            Method::RegularCentre => regular::xyz_dyn(samples.get(), Rule::Centre, light, surface),
-            Method::RegularBox => regular::xyz_dyn(samples.get(), Rule::BoxAverage, light, surface),
+        // The estimate with the density's own type: no dynamic dispatch per
+        // wavelength, so that timings are a renderer's.
+        macro_rules! with_pdf {
+            ($pdf:expr, |$p:ident| $estimate:expr) => {
+                match ($pdf, &self.table) {
+                    (Pdf::Uniform, _) => {
+                        let $p = &Uniform;
+                        $estimate
+                    }
+                    (Pdf::Visible, _) => {
+                        let $p = &Visible;
+                        $estimate
+                    }
+                    (_, Some($p)) => $estimate,
+                    (_, None) => Err(Error::DarkLight),
+                }
+            };
+        }
+        Ok(match self.method {
+            Method::Reference => reference::xyz(light, surface),
+            Method::Random { sampling } => with_pdf!(sampling.pdf, |pdf| Ok::<_, Error>(
+                hero::estimate_with::<1, _, R>(light, surface, samples, pdf, sampling.strata, rng)
+            ))?,
+            Method::Hero { k, sampling } => with_pdf!(sampling.pdf, |pdf| hero::estimate_dyn(
+                k,
+                light,
+                surface,
+                samples,
+                pdf,
+                sampling.strata,
+                rng
+            ))?,
+            Method::Buckets { rule } => Buckets::new(samples.get(), rule)?.xyz(light, surface),
+        })
+    }
+
+    /// The method's density for the light, if it draws wavelengths: for
+    /// checking estimates against theory (`study::variance`).
+    #[must_use]
+    pub fn pdf(&self) -> Option<&dyn WavelengthPdf> {
+        let pdf = self.method.sampling()?.pdf;
+        match (pdf, &self.table) {
+            (Pdf::Uniform, _) => Some(&Uniform),
+            (Pdf::Visible, _) => Some(&Visible),
+            (_, table) => table.as_ref().map(|t| t as &dyn WavelengthPdf),
         }
     }
 }

@@ -2,7 +2,7 @@
 //! sampling wavelengths lands from the exact reference, perceptually.
 //!
 //! - [`scene`]: lights and surfaces, built-in or from files, named.
-//! - [`method`]: the five methods (reference, random, hero, centre and box
+//! - [`method`]: the five methods (reference, random, hero, center and box
 //!   buckets) behind one call; [`sampling`]: the random methods' pdf and
 //!   strata.
 //! - [`grid`]: every light × surface by every method (Appendix 2's layout).
@@ -22,19 +22,24 @@
 //!   pixels are independent estimates; [`sheet`] lays them out as a
 //!   labelled image, with the built-in bitmap [`font`].
 //!
+//! The top floor: it uses every floor below it and nothing uses it. Its
+//! functions return a [`StudyError`], the library's `Error` or what only a
+//! study asks (an empty scene, a budget).
+//!
 //! ```
 //! use std::num::NonZeroUsize;
-//! use speclab::{data, study::{method::Method, trials}};
+//! use speclab::{data::{lights, patches}, study::{method::Method, trials}};
 //! let (n, t) = (NonZeroUsize::new(16).unwrap(), NonZeroUsize::new(100).unwrap());
-//! let stats = trials::method(&data::A, &data::F4, Method::HERO, n, t, 1)?;
+//! let stats = trials::method(&lights::A, &patches::F4, Method::HERO, n, t, 1)?;
 //! assert!(stats.rms_de00 > 0.0 && stats.trials == 100);
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 pub mod chart;
 pub mod compare;
 pub mod convergence;
 pub mod cost;
+mod error;
 pub mod font;
 pub mod grid;
 pub mod method;
@@ -49,3 +54,5 @@ pub mod swatches;
 pub mod threshold;
 pub mod trials;
 pub mod variance;
+
+pub use error::StudyError;

@@ -8,9 +8,9 @@
 //! a just-noticeable difference between two colours side by side.
 //!
 //! ```
-//! use speclab::{data, sampling::reference, study::perceptual};
-//! let white = reference::white(&data::D65);
-//! let lab = perceptual::lab(reference::xyz(&data::D65, &data::A1), white);
+//! use speclab::{data::{lights, patches}, sampling::reference, study::perceptual};
+//! let white = reference::white(&lights::D65);
+//! let lab = perceptual::lab(reference::xyz(&lights::D65, &patches::A1), white);
 //! assert!(lab[0] > 95.0 && lab[1].abs() < 2.0); // A1 is a near-white patch
 //! assert_eq!(perceptual::delta_e00(white, white, white), 0.0);
 //! ```
@@ -18,7 +18,7 @@
 use palette::color_difference::Ciede2000;
 use palette::white_point::D65;
 
-use crate::Xyz;
+use crate::color::Xyz;
 
 /// The largest ratio of a tristimulus value to the white's, `X/Xn`, that
 /// [`lab`] uses. A colour a million times brighter than the white (L* ≈

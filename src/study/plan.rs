@@ -26,19 +26,22 @@
 //! // A dozen buckets (about 10 ns) beat every Monte Carlo method that gets
 //! // within budget (a microsecond and more).
 //! assert!(!chosen.config.method.is_random());
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::num::NonZeroUsize;
 
+use crate::color::Xyz;
+use crate::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
 use crate::sampling::reference;
-use crate::sampling::regular::{self, MAX_BUCKETS, Rule};
+use crate::study::convergence::CONVERGENCE_MAX_N;
 use crate::study::cost::{self, Config, Cost};
+use crate::study::error::StudyError;
 use crate::study::method::{Method, derive_seed};
+use crate::study::perceptual;
 use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
-use crate::study::{convergence, perceptual, trials};
-use crate::{Error, Xyz};
+use crate::study::trials::{self, Stats};
 
 /// What the plan must meet.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -119,25 +122,25 @@ pub struct Plan {
 /// Plans `lights × surfaces` for `request`, with every candidate's cost
 /// measured now (see [`costs`]). Errors for an empty scene or a budget that
 /// is not finite and positive.
-pub fn plan(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<Plan, Error> {
+pub fn plan(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<Plan, StudyError> {
     validate(lights, surfaces, request)?;
     plan_with_costs(lights, surfaces, request, &costs(&lights[0], &surfaces[0])?)
 }
 
 /// An error for an empty scene or a budget that is not finite and positive.
-fn validate(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<(), Error> {
+fn validate(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<(), StudyError> {
     if lights.is_empty() || surfaces.is_empty() {
-        return Err(Error::EmptyScene);
+        return Err(StudyError::EmptyScene);
     }
     if !(request.budget.is_finite() && request.budget > 0.0) {
-        return Err(Error::Budget { value: request.budget });
+        return Err(StudyError::Budget { value: request.budget });
     }
     Ok(())
 }
 
 /// Every candidate configuration with its cost measured on `light ×
 /// surface` (the reference excepted), in increasing cost per estimate.
-pub fn costs(light: &Named, surface: &Named) -> Result<Vec<(Config, Cost)>, Error> {
+pub fn costs(light: &Named, surface: &Named) -> Result<Vec<(Config, Cost)>, StudyError> {
     let mut out = Vec::new();
     for config in configs() {
         out.push((config, cost::measure(config, &light.spectrum, &surface.spectrum)?));
@@ -154,20 +157,25 @@ pub fn plan_with_costs(
     surfaces: &[Named],
     request: &Request,
     costs: &[(Config, Cost)],
-) -> Result<Plan, Error> {
+) -> Result<Plan, StudyError> {
     validate(lights, surfaces, request)?;
     let scene = Scene::new(lights, surfaces);
     let mut candidates = costs.to_vec();
     candidates.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
-    let (centre, boxed) = (scene.bucket_errors(Rule::Centre)?, scene.bucket_errors(Rule::BoxAverage)?);
+    let (center, boxed) =
+        (scene.bucket_errors(BucketRule::Center)?, scene.bucket_errors(BucketRule::BoxAverage)?);
     let mut plan = Plan { chosen: None, runners_up: Vec::new(), others: Vec::new() };
     for (config, cost) in candidates {
         let done = plan.runners_up.len() == 3;
         let verdict = match config.method {
             _ if done => Verdict::NotTried,
-            Method::RegularCentre | Method::RegularBox if !request.allow_bias => Verdict::Biased,
-            Method::RegularCentre => bucket_verdict(&centre, config.count.get(), request.budget),
-            Method::RegularBox => bucket_verdict(&boxed, config.count.get(), request.budget),
+            Method::Buckets { .. } if !request.allow_bias => Verdict::Biased,
+            Method::Buckets { rule: BucketRule::Center } => {
+                bucket_verdict(&center, config.count.get(), request.budget)
+            }
+            Method::Buckets { rule: BucketRule::BoxAverage } => {
+                bucket_verdict(&boxed, config.count.get(), request.budget)
+            }
             _ => scene.monte_carlo_verdict(config, request)?,
         };
         let candidate = Candidate { config, cost, verdict };
@@ -187,10 +195,10 @@ fn configs() -> Vec<Config> {
     let mut out: Vec<Config> = Sampling::all()
         .into_iter()
         .flat_map(|s| random.map(|m| m.with_sampling(s)))
-        .flat_map(|m| convergence::counts(m).into_iter().map(move |n| Config::new(m, count(n))))
+        .flat_map(|m| m.counts(CONVERGENCE_MAX_N).into_iter().map(move |n| Config::new(m, count(n))))
         .collect();
-    for method in [Method::RegularCentre, Method::RegularBox] {
-        out.extend((1..=MAX_BUCKETS).map(|m| Config::new(method, count(m))));
+    for method in [Method::CENTER, Method::BOX] {
+        out.extend(method.counts(CONVERGENCE_MAX_N).into_iter().map(|m| Config::new(method, count(m))));
     }
     out
 }
@@ -225,17 +233,13 @@ impl<'a> Scene<'a> {
     }
 
     /// For M = 1 … 64, the worst ΔE00 over the cells and where it is.
-    fn bucket_errors(&self, rule: Rule) -> Result<Vec<(f64, String)>, Error> {
+    fn bucket_errors(&self, rule: BucketRule) -> Result<Vec<(f64, String)>, StudyError> {
         (1..=MAX_BUCKETS)
             .map(|m| {
+                let buckets = Buckets::new(m, rule)?;
                 let mut worst = (f64::NEG_INFINITY, String::new());
                 for (l, s, exact, white) in &self.cells {
-                    let de = perceptual::delta_e00(
-                        regular::xyz_dyn(m, rule, &l.spectrum, &s.spectrum)?,
-                        *exact,
-                        *white,
-                    );
-                    // (`>=` would name the later of two cells tied exactly.)
+                    let de = perceptual::delta_e00(buckets.xyz(&l.spectrum, &s.spectrum), *exact, *white);
                     if de > worst.0 {
                         worst = (de, format!("{} × {}", l.name, s.name));
                     }
@@ -246,37 +250,54 @@ impl<'a> Scene<'a> {
     }
 
     /// Screens every cell with a tenth of the trials, then runs them all;
-    /// within budget if every cell's 95 % upper bound is.
-    fn monte_carlo_verdict(&self, config: Config, request: &Request) -> Result<Verdict, Error> {
+    /// within budget if every cell's 95 % upper bound is. Each cell and
+    /// stage draws from a stream of its own.
+    fn monte_carlo_verdict(&self, config: Config, request: &Request) -> Result<Verdict, StudyError> {
         let screen = NonZeroUsize::new(request.trials.get().div_ceil(10).max(10)).unwrap_or(request.trials);
-        let mut worst = 0.0f64;
-        for (stage, trials) in [(0u64, screen.min(request.trials)), (1, request.trials)] {
-            for (c, (l, s, exact, white)) in self.cells.iter().enumerate() {
-                let prepared = config.method.prepare(&l.spectrum)?;
-                // One stream per cell and stage. Another injective choice
-                // (`^` for `|` is the same here) changes only which draws.
-                let base = derive_seed(request.seed, (c as u64) << 1 | stage);
-                let stats = trials::run(*exact, *white, trials, base, |seed| {
-                    prepared.xyz(&s.spectrum, config.count, seed)
-                })?;
-                let (lower, upper) = stats.rms_de00_interval();
-                let cell = format!("{} × {}", l.name, s.name);
-                // The screen only saves time: it stops a cell whose lower
-                // bound from a tenth of the trials is already above budget,
-                // which the full run would (almost surely) reject too.
-                if stage == 0 && lower > request.budget {
-                    return Ok(Verdict::Above { worst: lower, cell });
-                }
-                if stage == 1 {
-                    if upper > request.budget {
-                        return Ok(Verdict::Above { worst: stats.rms_de00, cell });
-                    }
-                    worst = worst.max(upper);
-                }
-            }
+        let stages = [screen.min(request.trials), request.trials];
+        let mut prepared = Vec::with_capacity(self.cells.len());
+        for (l, ..) in &self.cells {
+            prepared.push(config.method.prepare(&l.spectrum)?);
         }
-        Ok(Verdict::Within { worst })
+        let names: Vec<String> =
+            self.cells.iter().map(|(l, s, ..)| format!("{} × {}", l.name, s.name)).collect();
+        judge(&names, request.budget, |c, stage| {
+            let (_, s, exact, white) = &self.cells[c];
+            let base = derive_seed(request.seed, (c as u64) << 1 | stage as u64);
+            trials::run(*exact, *white, stages[stage], base, |seed| {
+                prepared[c].xyz(&s.spectrum, config.count, seed)
+            })
+        })
     }
+}
+
+/// The Monte Carlo verdict for `cells` from `run(cell, stage)`, the trials
+/// of stage 0 (the screen, a tenth of the trials) or 1 (all of them): a
+/// cell whose screened RMS ΔE00 has its 95 % interval's lower end above
+/// `budget` stops the run (the full run would almost surely reject it too:
+/// the screen only saves time); otherwise within budget if every cell's
+/// full-run upper end is, the worst upper end reported.
+fn judge(
+    cells: &[String],
+    budget: f64,
+    mut run: impl FnMut(usize, usize) -> Result<Stats, StudyError>,
+) -> Result<Verdict, StudyError> {
+    for (c, cell) in cells.iter().enumerate() {
+        let (lower, _) = run(c, 0)?.rms_de00_interval();
+        if lower > budget {
+            return Ok(Verdict::Above { worst: lower, cell: cell.clone() });
+        }
+    }
+    let mut worst = 0.0f64;
+    for (c, cell) in cells.iter().enumerate() {
+        let stats = run(c, 1)?;
+        let (_, upper) = stats.rms_de00_interval();
+        if upper > budget {
+            return Ok(Verdict::Above { worst: stats.rms_de00, cell: cell.clone() });
+        }
+        worst = worst.max(upper);
+    }
+    Ok(Verdict::Within { worst })
 }
 
 #[cfg(test)]
@@ -297,71 +318,60 @@ mod tests {
         assert_eq!(bucket_verdict(&errors, 2, 1.0), Verdict::Unstable { worst: 0.6, m: 3 });
     }
 
-    /// The upper end of the 95 % interval of each cell's full run, computed
-    /// the way the module says: its own stream per cell, all the trials.
-    fn full_run_bounds(scene: &Scene, config: Config, request: &Request) -> Vec<(f64, f64)> {
-        let cells = scene.cells.iter().enumerate();
-        cells
-            .map(|(c, (l, s, exact, white))| {
-                let prepared = config.method.prepare(&l.spectrum).unwrap();
-                let base = derive_seed(request.seed, (c as u64) << 1 | 1);
-                let stats = trials::run(*exact, *white, request.trials, base, |seed| {
-                    prepared.xyz(&s.spectrum, config.count, seed)
-                });
-                let stats = stats.unwrap();
-                (stats.rms_de00, stats.rms_de00_interval().1)
-            })
-            .collect()
+    /// Statistics with a chosen RMS and standard error of the mean square.
+    fn stats(rms: f64, se: f64) -> Stats {
+        let zero = Xyz::ZERO;
+        Stats {
+            trials: 10,
+            bias: zero,
+            sd: zero,
+            rms_de00: rms,
+            mean_square_se: se,
+            p95_de00: rms,
+            false_out_of_gamut: None,
+            false_in_gamut: None,
+        }
     }
 
+    /// Hand-made statistics per cell and stage: the verdict takes every
+    /// cell's full-run upper bound, and names the cell that breaks a budget.
     #[test]
-    fn monte_carlo_verdicts_use_the_full_run_of_every_cell() {
-        let (lights, surfaces) =
-            (crate::study::scene::builtin_lights(), crate::study::scene::builtin_surfaces());
-        let scene = Scene::new(&lights[..1], &surfaces[..3]);
-        let config = Config::new(Method::HERO, NonZeroUsize::new(4).unwrap());
-        let loose = Request { budget: 100.0, trials: NonZeroUsize::new(40).unwrap(), ..Request::default() };
-        let bounds = full_run_bounds(&scene, config, &loose);
-        let worst = bounds.iter().map(|b| b.1).fold(0.0, f64::max);
-        let within = scene.monte_carlo_verdict(config, &loose).unwrap();
-        assert_eq!(within, Verdict::Within { worst });
+    fn the_verdict_bounds_every_cell_by_its_full_run() {
+        let cells = ["A × E2", "A × F4", "A × G4"].map(String::from);
+        let screen = [stats(0.5, 0.01), stats(0.6, 0.01), stats(0.4, 0.01)];
+        let full = [stats(0.5, 0.02), stats(0.7, 0.02), stats(0.3, 0.02)];
+        let run = |c: usize, stage: usize| Ok(if stage == 0 { screen[c] } else { full[c] });
+        let upper = full.map(|s| s.rms_de00_interval().1);
+        let worst = upper.iter().copied().fold(0.0, f64::max);
+        assert_eq!(worst, upper[1]);
+        assert_eq!(judge(&cells, 1.0, run).unwrap(), Verdict::Within { worst });
         // A budget equal to the worst upper bound is met; just below, it is
-        // not, and the cell named is the one with that bound.
-        let at = Request { budget: worst, ..loose };
-        assert_eq!(scene.monte_carlo_verdict(config, &at).unwrap(), Verdict::Within { worst });
-        let below = Request { budget: worst * (1.0 - 1e-12), ..loose };
-        let cell = bounds.iter().position(|b| b.1 == worst).unwrap();
-        let name = format!("{} × {}", lights[0].name, surfaces[cell].name);
-        let above = Verdict::Above { worst: bounds[cell].0, cell: name };
-        assert_eq!(scene.monte_carlo_verdict(config, &below).unwrap(), above);
+        // not, and the cell named is the one with that bound, with its RMS.
+        assert_eq!(judge(&cells, worst, run).unwrap(), Verdict::Within { worst });
+        let above = Verdict::Above { worst: 0.7, cell: cells[1].clone() };
+        assert_eq!(judge(&cells, worst * (1.0 - 1e-12), run).unwrap(), above);
     }
 
+    /// A cell whose screen is clearly above budget (its interval's lower
+    /// end) stops the run before any full run; a budget exactly at that
+    /// lower end passes the screen, and the full run decides.
     #[test]
     fn a_clear_failure_is_stopped_by_the_screen() {
-        let (lights, surfaces) =
-            (crate::study::scene::builtin_lights(), crate::study::scene::builtin_surfaces());
-        let scene = Scene::new(&lights[..1], &surfaces[..1]);
-        let config = Config::new(Method::RANDOM, NonZeroUsize::MIN);
-        let request = Request { budget: 0.01, ..Request::default() };
-        // The screen: a tenth of the trials (20), stream 0; its lower bound.
-        let (_, _, exact, white) = scene.cells[0];
-        let prepared = config.method.prepare(&lights[0].spectrum).unwrap();
-        let screen = trials::run(exact, white, NonZeroUsize::new(20).unwrap(), derive_seed(1, 0), |seed| {
-            prepared.xyz(&surfaces[0].spectrum, config.count, seed)
+        let cells = ["F11 × E2", "F11 × A1"].map(String::from);
+        let screen = [stats(0.5, 0.01), stats(5.0, 0.5)];
+        let full = [stats(0.5, 0.01), stats(6.0, 0.1)];
+        let lower = screen[1].rms_de00_interval().0;
+        let mut calls = Vec::new();
+        let verdict = judge(&cells, 1.0, |c, stage| {
+            calls.push((c, stage));
+            Ok(if stage == 0 { screen[c] } else { full[c] })
         });
-        let lower = screen.unwrap().rms_de00_interval().0;
-        assert!(lower > request.budget);
-        let cell = format!("{} × {}", lights[0].name, surfaces[0].name);
-        assert_eq!(
-            scene.monte_carlo_verdict(config, &request).unwrap(),
-            Verdict::Above { worst: lower, cell: cell.clone() }
-        );
-        // A budget exactly at the screen's lower bound passes the screen;
-        // the full run then rejects the cell with its own RMS.
-        let at = Request { budget: lower, ..Request::default() };
-        match scene.monte_carlo_verdict(config, &at).unwrap() {
-            Verdict::Above { worst, cell: c } => assert!(worst != lower && c == cell),
-            other => panic!("expected the full run to reject the cell, got {other:?}"),
-        }
+        assert_eq!(verdict.unwrap(), Verdict::Above { worst: lower, cell: cells[1].clone() });
+        assert_eq!(calls, [(0, 0), (1, 0)], "no full run after a clear failure");
+        let at = judge(&cells, lower, |c, stage| Ok(if stage == 0 { screen[c] } else { full[c] }));
+        assert_eq!(at.unwrap(), Verdict::Above { worst: 6.0, cell: cells[1].clone() });
+        // An error from a run is the verdict's error.
+        let failing = judge(&cells, 1.0, |_, _| Err(StudyError::EmptyScene));
+        assert!(matches!(failing, Err(StudyError::EmptyScene)));
     }
 }

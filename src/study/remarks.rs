@@ -17,18 +17,22 @@
 //! taken relative to.
 //!
 //! ```
-//! use speclab::{data, sampling::reference, study::remarks::{self, Normalization}};
-//! let d65 = Normalization::Luminance.apply(&data::D65)?;
+//! use speclab::{data::{lights, patches}, sampling::reference, study::remarks::{self, Normalization}};
+//! let d65 = Normalization::Luminance.apply(&lights::D65)?;
 //! assert!((reference::white(&d65).y - 100.0).abs() < 1e-9);
-//! let a1 = remarks::white_balance(reference::xyz(&data::A, &data::A1), &data::A);
+//! let a1 = remarks::white_balance(reference::xyz(&lights::A, &patches::A1), &lights::A);
 //! let rgb = a1.to_linear_srgb();
 //! assert!((rgb.r - rgb.b).abs() / rgb.g < 0.05); // near-neutral after adaptation
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
+use crate::color::Xyz;
 use crate::color::adaptation::bradford;
+use crate::error::named_choices;
 use crate::sampling::reference;
-use crate::{Error, LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, WIDTH, Xyz, data};
+use crate::spectrum::data::lights;
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, TabulatedSpectrum};
+use crate::study::error::StudyError;
 
 /// How a light is scaled before use.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -42,40 +46,26 @@ pub enum Normalization {
     Luminance,
 }
 
+named_choices!(Normalization, "a normalisation": None => "none", Power => "power", Luminance => "luminance");
+
 impl Normalization {
     /// All options, in CLI order.
     pub const ALL: [Normalization; 3] = [Normalization::None, Normalization::Power, Normalization::Luminance];
-
-    /// The name used on the command line.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Normalization::None => "none",
-            Normalization::Power => "power",
-            Normalization::Luminance => "luminance",
-        }
-    }
-
-    /// The option with this name.
-    #[must_use]
-    pub fn from_name(name: &str) -> Option<Normalization> {
-        Normalization::ALL.into_iter().find(|n| n.name() == name)
-    }
 
     /// The factor that scales `light` as this option asks.
     #[must_use]
     pub fn factor(self, light: &TabulatedSpectrum) -> f64 {
         match self {
             Normalization::None => 1.0,
-            Normalization::Power => WIDTH / light.integral(LAMBDA_MIN, LAMBDA_MAX),
+            Normalization::Power => LAMBDA_WIDTH / light.integral(LAMBDA_MIN, LAMBDA_MAX),
             Normalization::Luminance => 100.0 / reference::white(light).y,
         }
     }
 
     /// `light` scaled by [`Normalization::factor`]; an error if the light is
     /// dark (zero power or luminance over the range).
-    pub fn apply(self, light: &TabulatedSpectrum) -> Result<TabulatedSpectrum, Error> {
-        light.scaled(self.factor(light))
+    pub fn apply(self, light: &TabulatedSpectrum) -> Result<TabulatedSpectrum, StudyError> {
+        Ok(light.scaled(self.factor(light))?)
     }
 }
 
@@ -83,7 +73,7 @@ impl Normalization {
 /// to the luminance of `light`'s.
 #[must_use]
 pub fn target_white(light: &TabulatedSpectrum) -> Xyz {
-    let d65 = reference::white(&data::D65);
+    let d65 = reference::white(&lights::D65);
     d65 * (reference::white(light).y / d65.y)
 }
 
@@ -105,7 +95,7 @@ pub struct Viewing {
 
 impl Viewing {
     /// `light` scaled as [`Viewing::normalize`] asks.
-    pub fn light(&self, light: &TabulatedSpectrum) -> Result<TabulatedSpectrum, Error> {
+    pub fn light(&self, light: &TabulatedSpectrum) -> Result<TabulatedSpectrum, StudyError> {
         self.normalize.apply(light)
     }
 

@@ -5,9 +5,9 @@
 //! new output format** is one more writer here, over the same rows.
 //!
 //! ```
-//! use speclab::study::{grid::Grid, remarks::Viewing, report, scene};
+//! use speclab::study::{grid::GridOptions, remarks::Viewing, report, scene};
 //! let (lights, surfaces) = (scene::builtin_lights(), scene::builtin_surfaces());
-//! let rows = Grid::default().rows(&lights[..1], &surfaces[..1])?;
+//! let rows = GridOptions::default().rows(&lights[..1], &surfaces[..1])?;
 //! let mut csv = Vec::new();
 //! report::grid_csv(&mut csv, &rows, &Viewing::default())?;
 //! let text = String::from_utf8(csv).unwrap();
@@ -23,23 +23,23 @@ pub use chart::chart_csv;
 pub use plan::plan_text;
 
 use crate::color::display::{Display, Exposure, GamutMap, Srgb8};
-use crate::study::compare::{Line, Settings};
-use crate::study::convergence;
-use crate::study::grid::{Grid, Row};
+use crate::color::{LinearSrgb, Xyz};
+use crate::study::compare::{CompareOptions, Line};
+use crate::study::convergence::{self, ConvergenceRow};
+use crate::study::grid::{GridOptions, GridRow};
 use crate::study::method::Method;
 use crate::study::perceptual;
 use crate::study::remarks::Viewing;
-use crate::{LinearSrgb, Xyz};
 
 /// Grid rows as CSV: `light,surface,method,samples,x,y,z,r,g,b`, then
 /// `pdf,strata,evals`; full f64 precision, colours white-balanced if
 /// `viewing` asks.
-pub fn grid_csv(out: &mut impl Write, rows: &[Row], viewing: &Viewing) -> io::Result<()> {
+pub fn grid_csv(out: &mut impl Write, rows: &[GridRow], viewing: &Viewing) -> io::Result<()> {
     writeln!(out, "light,surface,method,samples,x,y,z,r,g,b,pdf,strata,evals")?;
     for row in rows {
         let xyz = viewing.adapt(row.xyz, &row.light.spectrum);
         let [r, g, b] = xyz.to_linear_srgb().to_array();
-        let (light, surface, method) = (&row.light.name, &row.surface.name, row.method.name());
+        let (light, surface, method) = (&row.light.name, &row.surface.name, row.method);
         let (pdf, strata) = sampling_columns(row.method);
         let evals = std::num::NonZeroUsize::new(row.samples).map_or(0, |n| row.method.evaluations(n));
         writeln!(
@@ -57,9 +57,9 @@ pub fn grid_csv(out: &mut impl Write, rows: &[Row], viewing: &Viewing) -> io::Re
 /// gamut as it says).
 pub fn grid_table(
     out: &mut impl Write,
-    grid: &Grid,
+    grid: &GridOptions,
     viewing: &Viewing,
-    rows: &[Row],
+    rows: &[GridRow],
     swatches: Option<GamutMap>,
 ) -> io::Result<()> {
     writeln!(out, "speclab grid: linear sRGB (unclamped) of light × patch, by method")?;
@@ -68,10 +68,10 @@ pub fn grid_table(
         out,
         "random: n = {n} wavelengths; hero: n = {n} samples × 4 wavelengths; regular: M = {m} buckets; seed {seed}"
     )?;
-    let (pdf, strata) = (sampling.pdf.name(), sampling.strata.name());
+    let (pdf, strata) = (sampling.pdf, sampling.strata);
     writeln!(out, "random and hero wavelengths: pdf {pdf}, strata {strata}")?;
     let balance = if viewing.white_balance { "Bradford to D65" } else { "off" };
-    writeln!(out, "normalise: {}; white balance: {balance}", viewing.normalize.name())?;
+    writeln!(out, "normalise: {}; white balance: {balance}", viewing.normalize)?;
     writeln!(
         out,
         "Δ = distance to the reference in sRGB (and % of its length); ΔE00 in CIELAB of the light's white"
@@ -107,7 +107,7 @@ pub fn grid_table(
 /// the errors against `reference`.
 fn grid_line(
     out: &mut impl Write,
-    row: &Row,
+    row: &GridRow,
     xyz: Xyz,
     reference: Option<Xyz>,
     white: Xyz,
@@ -117,18 +117,24 @@ fn grid_line(
     let patch = if row.method == Method::Reference { row.surface.name.as_str() } else { "" };
     let swatch = display.map_or_else(String::new, |d| swatch(d.pixel(rgb)));
     let flag = if rgb.in_gamut() { ' ' } else { '!' };
-    let name = row.method.name();
+    let name = row.method.to_string();
     write!(out, "{swatch}{patch:<5} {name:<15} {:>10.3} {:>10.3} {:>10.3}{flag}", rgb.r, rgb.g, rgb.b)?;
     match reference.filter(|_| row.method != Method::Reference) {
         Some(exact) => {
             let exact_rgb = exact.to_linear_srgb();
             let d = rgb.distance(exact_rgb);
-            let share = 100.0 * d / exact_rgb.distance(LinearSrgb::default());
             let de = perceptual::delta_e00(xyz, exact, white);
-            writeln!(out, " {d:>9.3} {share:>6.2}% {de:>7.2}")
+            writeln!(out, " {d:>9.3} {:>7} {de:>7.2}", share(d, exact_rgb.distance(LinearSrgb::default())))
         }
         None => writeln!(out),
     }
+}
+
+/// `part` as a percentage of `whole`, or `–` where that is undefined (a
+/// black reference: a black surface, or a light without power).
+fn share(part: f64, whole: f64) -> String {
+    let percent = 100.0 * part / whole;
+    if percent.is_finite() { format!("{percent:.2}%") } else { "–".to_string() }
 }
 
 /// Two truecolour terminal cells showing `pixel`.
@@ -150,37 +156,37 @@ fn swatch_legend(gamut: GamutMap) -> String {
     };
     format!(
         "swatches: exposed so the light's white just fits the display in its own colour; {how} (--gamut {}); sRGB",
-        gamut.name()
+        gamut
     )
 }
 
 /// bias X, Y, Z; sd X, Y, Z; RMS and p95 ΔE00.
-fn numbers(r: &convergence::Row) -> [f64; 8] {
+fn numbers(r: &ConvergenceRow) -> [f64; 8] {
     let (b, s) = (r.stats.bias, r.stats.sd);
     [b.x, b.y, b.z, s.x, s.y, s.z, r.stats.rms_de00, r.stats.p95_de00]
 }
 
 /// Wavelength evaluations of a convergence row.
-fn evals(r: &convergence::Row) -> usize {
+fn evals(r: &ConvergenceRow) -> usize {
     r.method.evaluations(std::num::NonZeroUsize::new(r.samples).unwrap_or(std::num::NonZeroUsize::MIN))
 }
 
 /// A random method's pdf and strata for tables and CSV, `-` for others.
-fn sampling_columns(method: Method) -> (&'static str, &'static str) {
-    method.sampling().map_or(("-", "-"), |s| (s.pdf.name(), s.strata.name()))
+fn sampling_columns(method: Method) -> (String, String) {
+    method.sampling().map_or(("-".into(), "-".into()), |s| (s.pdf.to_string(), s.strata.to_string()))
 }
 
 /// Convergence rows as CSV, one per method, sampling and count. The first
 /// thirteen columns are those of earlier versions; `pdf`, `strata` and
 /// `evals` follow.
-pub fn converge_csv(out: &mut impl Write, rows: &[convergence::Row]) -> io::Result<()> {
+pub fn converge_csv(out: &mut impl Write, rows: &[ConvergenceRow]) -> io::Result<()> {
     writeln!(
         out,
         "light,surface,method,samples,trials,bias_x,bias_y,bias_z,sd_x,sd_y,sd_z,rms_de00,p95_de00,pdf,strata,evals"
     )?;
     for r in rows {
         let numbers: Vec<String> = numbers(r).iter().map(f64::to_string).collect();
-        let head = format!("{},{},{},{},{}", r.light, r.surface, r.method.name(), r.samples, r.stats.trials);
+        let head = format!("{},{},{},{},{}", r.light, r.surface, r.method, r.samples, r.stats.trials);
         let (pdf, strata) = sampling_columns(r.method);
         writeln!(out, "{head},{},{pdf},{strata},{}", numbers.join(","), evals(r))?;
     }
@@ -190,7 +196,7 @@ pub fn converge_csv(out: &mut impl Write, rows: &[convergence::Row]) -> io::Resu
 /// Convergence rows as a table per light × surface × method (and sampling).
 pub fn converge_table(
     out: &mut impl Write,
-    rows: &[convergence::Row],
+    rows: &[ConvergenceRow],
     trials: usize,
     seed: u64,
 ) -> io::Result<()> {
@@ -203,7 +209,7 @@ pub fn converge_table(
     for run in rows.chunk_by(|a, b| (&a.light, &a.surface, a.method) == (&b.light, &b.surface, b.method)) {
         let r = &run[0];
         let sampling = r.method.sampling().map_or(String::new(), |s| format!(" ({s})"));
-        writeln!(out, "\n{} × {}: {}{sampling}", r.light, r.surface, r.method.name())?;
+        writeln!(out, "\n{} × {}: {}{sampling}", r.light, r.surface, r.method)?;
         let heads: String = heads.iter().map(|h| format!(" {h:>10}")).collect();
         writeln!(out, "{:>7} {:>7}{heads}", "samples", "evals")?;
         for r in run {
@@ -220,7 +226,7 @@ pub fn converge_table(
 /// when that differs (a Markdown table).
 pub fn converge_summary(
     out: &mut impl Write,
-    rows: &[convergence::Row],
+    rows: &[ConvergenceRow],
     trials: usize,
     seed: u64,
 ) -> io::Result<()> {
@@ -242,7 +248,7 @@ pub fn converge_summary(
     writeln!(
         out,
         "n over powers of two up to {}, M up to 64; {trials} trials per random row, seed {seed}.\n",
-        convergence::MAX_N
+        convergence::CONVERGENCE_MAX_N
     )?;
     let heads: Vec<String> =
         [1.0, 0.5].iter().flat_map(|t| lights.iter().map(move |l| format!("{l} < {t}"))).collect();
@@ -262,7 +268,7 @@ pub fn converge_summary(
             })
             .collect();
         let (pdf, strata) = sampling_columns(method);
-        writeln!(out, "| {} | {pdf} | {strata} | {} |", method.name(), cells.join(" | "))?;
+        writeln!(out, "| {method} | {pdf} | {strata} | {} |", cells.join(" | "))?;
     }
     writeln!(out, "\n– : not reached within the counts studied.")
 }
@@ -274,12 +280,12 @@ pub fn compare_table(
     out: &mut impl Write,
     light: &str,
     surface: &str,
-    s: &Settings,
+    s: &CompareOptions,
     lines: &[Line],
     swatches: Option<Display>,
 ) -> io::Result<()> {
     let balance = if s.viewing.white_balance { "Bradford to D65" } else { "off" };
-    let normalize = s.viewing.normalize.name();
+    let normalize = s.viewing.normalize;
     writeln!(
         out,
         "{light} × {surface}; normalise: {normalize}; white balance: {balance}; seed {}; RMS over {} trials",

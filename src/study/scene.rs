@@ -9,14 +9,15 @@
 //! assert_eq!(builtin_surfaces().len(), 6);
 //! let err = Choice::Name("F12".into()).resolve(Role::Light).unwrap_err();
 //! assert_eq!(err.to_string(), "expected a built-in light (A, D65 or F11), found \"F12\"");
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::path::PathBuf;
 
-use crate::data::{Light, Patch};
 use crate::io::Load;
-use crate::{Error, Role, TabulatedSpectrum};
+use crate::spectrum::data::{Light, Patch};
+use crate::spectrum::{Role, TabulatedSpectrum};
+use crate::study::error::StudyError;
 
 /// A spectrum with the name it has in tables.
 #[derive(Clone, Debug, PartialEq)]
@@ -48,21 +49,14 @@ impl Choice {
     /// The spectrum, named as tables show it (a file by its stem). Names are
     /// looked up among the built-in lights for [`Role::Light`] and among the
     /// patches otherwise.
-    pub fn resolve(&self, role: Role) -> Result<Named, Error> {
+    pub fn resolve(&self, role: Role) -> Result<Named, StudyError> {
         match self {
-            Choice::Name(name) => {
-                let builtin = match role {
-                    Role::Light => Light::from_name(name).map(|l| (l.name(), l.spectrum())),
-                    _ => Patch::from_name(name).map(|p| (p.name(), p.spectrum())),
-                };
-                let expected = match role {
-                    Role::Light => "a built-in light (A, D65 or F11)",
-                    _ => "a built-in patch (E2, F4, G4, H4, J4 or A1)",
-                };
-                let (name, spectrum) =
-                    builtin.ok_or_else(|| Error::UnknownSpectrum { name: name.clone(), expected })?;
-                Ok(Named::new(name, spectrum.clone()))
-            }
+            Choice::Name(name) => Ok(match role {
+                Role::Light => {
+                    name.parse::<Light>().map(|l| Named::new(l.to_string(), l.spectrum().clone()))?
+                }
+                _ => name.parse::<Patch>().map(|p| Named::new(p.to_string(), p.spectrum().clone()))?,
+            }),
             Choice::File(path) => {
                 let spectrum = Load::new(role).file(path)?;
                 let name =
@@ -76,11 +70,11 @@ impl Choice {
 /// The three appendix lights, named.
 #[must_use]
 pub fn builtin_lights() -> Vec<Named> {
-    Light::ALL.iter().map(|l| Named::new(l.name(), l.spectrum().clone())).collect()
+    Light::ALL.iter().map(|l| Named::new(l.to_string(), l.spectrum().clone())).collect()
 }
 
 /// The six appendix patches, named.
 #[must_use]
 pub fn builtin_surfaces() -> Vec<Named> {
-    Patch::ALL.iter().map(|p| Named::new(p.name(), p.spectrum().clone())).collect()
+    Patch::ALL.iter().map(|p| Named::new(p.to_string(), p.spectrum().clone())).collect()
 }

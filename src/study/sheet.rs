@@ -8,20 +8,20 @@
 //! pixels; [`Layout`] says where each swatch is.
 //!
 //! ```
-//! use speclab::study::{scene, sheet, swatches::{self, Settings}};
+//! use speclab::study::{scene, sheet, swatches::{self, SwatchOptions}};
 //! let (lights, patches) = (scene::builtin_lights(), scene::builtin_surfaces());
-//! let settings = Settings { size: 8, ..Settings::default() };
+//! let settings = SwatchOptions { size: 8, ..SwatchOptions::default() };
 //! let swatches = swatches::render(&lights[..1], &patches[..1], &settings)?;
 //! let image = sheet::draw(&swatches);
 //! let layout = sheet::Layout::new(&swatches);
 //! assert_eq!((image.width, image.height), (layout.width(), layout.height()));
 //! let (x, y) = layout.swatch_origin(0, 0, 0); // A × E2, reference
 //! assert_eq!(image.pixel(x, y), Some(swatches.swatch(0, 0, 0)[0]));
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use crate::color::display::Srgb8;
-use crate::study::font::{self, HEIGHT};
+use crate::study::font::{self, GLYPH_HEIGHT};
 use crate::study::swatches::Swatches;
 
 /// Space around the sheet.
@@ -37,7 +37,7 @@ pub const LEGEND_INK: Srgb8 = Srgb8::new(165, 165, 165);
 /// Scale of titles and row names (the column labels are at 1).
 const BIG: usize = 2;
 /// Height of a line of text at scale 1, with its spacing.
-const LINE: usize = HEIGHT + 4;
+const LINE: usize = GLYPH_HEIGHT + 4;
 
 /// An 8-bit sRGB image, row-major, three bytes per pixel.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -81,7 +81,7 @@ impl Image {
         for (i, c) in text.chars().enumerate() {
             let glyph = font::glyph(c);
             let left = x + i * font::ADVANCE * scale;
-            for (gx, gy) in (0..font::WIDTH).flat_map(|gx| (0..HEIGHT).map(move |gy| (gx, gy))) {
+            for (gx, gy) in (0..font::GLYPH_WIDTH).flat_map(|gx| (0..GLYPH_HEIGHT).map(move |gy| (gx, gy))) {
                 if font::ink(glyph, gx, gy) {
                     for (dx, dy) in (0..scale).flat_map(|dx| (0..scale).map(move |dy| (dx, dy))) {
                         self.set(left + gx * scale + dx, y + gy * scale + dy, colour);
@@ -122,7 +122,7 @@ fn header(s: &Swatches) -> (&'static str, [String; LEGEND_LINES]) {
         format!("N={} SAMPLES PER ESTIMATE, M={} BUCKETS, SEED {}.", t.n, t.m, t.seed),
         format!(
             "EXPOSURE: EACH LIGHT'S WHITE JUST FITS. WHITE BALANCE {balance}. GAMUT MAP {}.",
-            t.gamut.name().to_uppercase()
+            t.gamut.to_string().to_uppercase()
         ),
         "RANDOM AND HERO: EACH PIXEL IS ONE ESTIMATE, SO GRAIN IS NOISE.".to_string(),
         "FLAT SWATCHES ARE EXACT OR BIASED: COMPARE THEM WITH THE REFERENCE.".to_string(),
@@ -137,7 +137,7 @@ impl Layout {
         let size = s.settings.size;
         let names = s.patches.iter().map(|p| font::text_width(p, BIG)).max().unwrap_or(0);
         let labels = s.columns.iter().flat_map(|c| c.label()).map(|l| font::text_width(&l, 1)).max();
-        let top = MARGIN + HEIGHT * BIG + GAP + LEGEND_LINES * LINE + GAP;
+        let top = MARGIN + GLYPH_HEIGHT * BIG + GAP + LEGEND_LINES * LINE + GAP;
         let (title, legend) = header(s);
         let legend = legend.iter().map(|l| font::text_width(l, 1)).max().unwrap_or(0);
         Layout {
@@ -149,7 +149,7 @@ impl Layout {
             left: MARGIN + names + GAP,
             pitch: size.max(labels.unwrap_or(0)) + GAP,
             top,
-            section: HEIGHT * BIG + GAP / 2 + 3 * LINE + s.patches.len() * (size + GAP) + 2 * GAP,
+            section: GLYPH_HEIGHT * BIG + GAP / 2 + 3 * LINE + s.patches.len() * (size + GAP) + 2 * GAP,
         }
     }
 
@@ -173,7 +173,7 @@ impl Layout {
     /// Top left corner of the swatch of `light × patch` in `column`.
     #[must_use]
     pub fn swatch_origin(&self, light: usize, patch: usize, column: usize) -> (usize, usize) {
-        let rows = self.section_top(light) + HEIGHT * BIG + GAP / 2 + 3 * LINE;
+        let rows = self.section_top(light) + GLYPH_HEIGHT * BIG + GAP / 2 + 3 * LINE;
         (self.left + column * self.pitch, rows + patch * (self.size + GAP))
     }
 }
@@ -186,7 +186,7 @@ pub fn draw(s: &Swatches) -> Image {
     let (title, legend) = header(s);
     image.text(MARGIN, MARGIN, title, BIG, INK);
     for (i, line) in legend.iter().enumerate() {
-        image.text(MARGIN, MARGIN + HEIGHT * BIG + GAP + i * LINE, line, 1, LEGEND_INK);
+        image.text(MARGIN, MARGIN + GLYPH_HEIGHT * BIG + GAP + i * LINE, line, 1, LEGEND_INK);
     }
     for (l, light) in s.lights.iter().enumerate() {
         let top = layout.section_top(l);
@@ -194,12 +194,12 @@ pub fn draw(s: &Swatches) -> Image {
         for (c, column) in s.columns.iter().enumerate() {
             let (x, _) = layout.swatch_origin(l, 0, c);
             for (i, line) in column.label().iter().enumerate() {
-                image.text(x, top + HEIGHT * BIG + GAP / 2 + i * LINE, line, 1, INK);
+                image.text(x, top + GLYPH_HEIGHT * BIG + GAP / 2 + i * LINE, line, 1, INK);
             }
         }
         for (p, patch) in s.patches.iter().enumerate() {
             let (_, y) = layout.swatch_origin(l, p, 0);
-            image.text(MARGIN, y + s.settings.size.saturating_sub(HEIGHT * BIG) / 2, patch, BIG, INK);
+            image.text(MARGIN, y + s.settings.size.saturating_sub(GLYPH_HEIGHT * BIG) / 2, patch, BIG, INK);
             for c in 0..s.columns.len() {
                 paste(&mut image, &layout, s, (l, p, c));
             }

@@ -9,7 +9,7 @@
 //! (reference, regular buckets) is flat: its error is bias, a uniform shift.
 //!
 //! The columns ([`columns`]): the exact reference; random (n); hero (n,
-//! K = 4); regular-centre (M); regular-box (M); then hero with jittered
+//! K = 4); regular-center (M); regular-box (M); then hero with jittered
 //! strata (uniform pdf), and hero with jittered strata and the light's pdf.
 //! Of the 4 pdfs × 3 strata those two show the two levers a renderer has,
 //! one at a time: stratification alone, then importance sampling of the
@@ -24,16 +24,16 @@
 //!
 //! ```
 //! use std::num::NonZeroUsize;
-//! use speclab::study::{scene, swatches::{self, Settings}};
+//! use speclab::study::{scene, swatches::{self, SwatchOptions}};
 //! let (lights, patches) = (scene::builtin_lights(), scene::builtin_surfaces());
-//! let settings = Settings { size: 4, ..Settings::default() };
+//! let settings = SwatchOptions { size: 4, ..SwatchOptions::default() };
 //! let sheet = swatches::render(&lights[1..2], &patches[..2], &settings)?;
 //! assert_eq!(sheet.columns.len(), 7);
 //! let reference = sheet.swatch(0, 1, 0); // D65 × F4, exact: flat
 //! assert!(reference.iter().all(|&p| p == reference[0]));
 //! let random = sheet.swatch(0, 1, 1); // every pixel its own estimate
 //! assert!(random.iter().any(|&p| p != random[0]));
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::num::NonZeroUsize;
@@ -41,22 +41,25 @@ use std::num::NonZeroUsize;
 use rand::SeedableRng;
 use rand::rngs::StdRng;
 
+use crate::color::Xyz;
 use crate::color::adaptation::bradford;
 use crate::color::display::{Display, Exposure, GamutMap, Srgb8};
+use crate::sampling::buckets::BucketRule;
 use crate::sampling::reference;
 use crate::sampling::strata::Strata;
+use crate::spectrum::TabulatedSpectrum;
+use crate::study::error::StudyError;
 use crate::study::method::{Method, Prepared, derive_seed};
 use crate::study::remarks;
 use crate::study::sampling::{Pdf, Sampling};
 use crate::study::scene::Named;
-use crate::{Error, TabulatedSpectrum, Xyz};
 
 /// The largest swatch side [`render`] draws.
 pub const MAX_SIZE: usize = 1024;
 
 /// What the swatches show, and how.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Settings {
+pub struct SwatchOptions {
     /// Samples per estimate for the random and hero columns.
     pub n: NonZeroUsize,
     /// Buckets for the regular columns (1 to 64).
@@ -72,12 +75,19 @@ pub struct Settings {
     pub size: usize,
 }
 
-impl Default for Settings {
+impl Default for SwatchOptions {
     /// n = 16 (a renderer's count, where the methods differ at a glance),
     /// M = 16, seed 1, no white balance, chroma gamut map, 64 × 64.
     fn default() -> Self {
         let nz = |n| NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
-        Settings { n: nz(16), m: nz(16), seed: 1, white_balance: false, gamut: GamutMap::Chroma, size: 64 }
+        SwatchOptions {
+            n: nz(16),
+            m: nz(16),
+            seed: 1,
+            white_balance: false,
+            gamut: GamutMap::Chroma,
+            size: 64,
+        }
     }
 }
 
@@ -100,8 +110,8 @@ impl Column {
             Method::Reference => ["REFERENCE".into(), "EXACT".into(), String::new()],
             Method::Random { sampling } => ["RANDOM".into(), how(sampling), n],
             Method::Hero { k, sampling } => [format!("HERO K={k}"), how(sampling), n],
-            Method::RegularCentre => ["CENTRE".into(), "BUCKETS".into(), m],
-            Method::RegularBox => ["BOX".into(), "BUCKETS".into(), m],
+            Method::Buckets { rule: BucketRule::Center } => ["CENTER".into(), "BUCKETS".into(), m],
+            Method::Buckets { rule: BucketRule::BoxAverage } => ["BOX".into(), "BUCKETS".into(), m],
         }
     }
 }
@@ -109,25 +119,25 @@ impl Column {
 /// A sampling in a few capitals: `UNIFORM` (independent), `JITTER`
 /// (uniform, jittered), `LIGHT+JITTER`, `VISIBLE`, …
 fn how(sampling: Sampling) -> String {
-    let pdf = sampling.pdf.name().to_uppercase();
+    let pdf = sampling.pdf.to_string().to_uppercase();
     match (sampling.pdf, sampling.strata) {
-        (_, Strata::Independent) => pdf,
-        (Pdf::Uniform, strata) => strata.name().to_uppercase(),
-        (_, strata) => format!("{pdf}+{}", strata.name().to_uppercase()),
+        (_, Strata::None) => pdf,
+        (Pdf::Uniform, strata) => strata.to_string().to_uppercase(),
+        (_, strata) => format!("{pdf}+{}", strata.to_string().to_uppercase()),
     }
 }
 
 /// The columns for `s`, in order (see the module overview).
 #[must_use]
-pub fn columns(s: &Settings) -> Vec<Column> {
+pub fn columns(s: &SwatchOptions) -> Vec<Column> {
     let jitter = |pdf| Method::HERO.with_sampling(Sampling { pdf, strata: Strata::Jittered });
     let column = |method, samples| Column { method, samples };
     vec![
         column(Method::Reference, s.n),
         column(Method::RANDOM, s.n),
         column(Method::HERO, s.n),
-        column(Method::RegularCentre, s.m),
-        column(Method::RegularBox, s.m),
+        column(Method::CENTER, s.m),
+        column(Method::BOX, s.m),
         column(jitter(Pdf::Uniform), s.n),
         column(jitter(Pdf::Light), s.n),
     ]
@@ -143,7 +153,7 @@ pub struct Swatches {
     /// The columns, in order.
     pub columns: Vec<Column>,
     /// What they were rendered with.
-    pub settings: Settings,
+    pub settings: SwatchOptions,
     /// `size²` pixels per swatch, row-major, swatches light-major, then
     /// patch, then column.
     pixels: Vec<Srgb8>,
@@ -173,7 +183,7 @@ struct Look {
 }
 
 impl Look {
-    fn new(light: &TabulatedSpectrum, s: &Settings) -> Look {
+    fn new(light: &TabulatedSpectrum, s: &SwatchOptions) -> Look {
         let white = reference::white(light);
         let balance = s.white_balance.then(|| (white, remarks::target_white(light)));
         let white = balance.map_or(white, |(_, target)| target);
@@ -195,8 +205,8 @@ enum Job<'a> {
 /// Renders every light × surface × column of [`columns`], on all cores.
 /// Errors if a count is not compiled (M outside 1 to 64) or a light pdf
 /// cannot follow a light (one the observer cannot see).
-pub fn render(lights: &[Named], surfaces: &[Named], s: &Settings) -> Result<Swatches, Error> {
-    let s = &Settings { size: s.size.min(MAX_SIZE), ..*s };
+pub fn render(lights: &[Named], surfaces: &[Named], s: &SwatchOptions) -> Result<Swatches, StudyError> {
+    let s = &SwatchOptions { size: s.size.min(MAX_SIZE), ..*s };
     let columns = columns(s);
     let mut jobs = Vec::with_capacity(lights.len() * surfaces.len() * columns.len());
     for light in lights {
@@ -221,7 +231,7 @@ pub fn render(lights: &[Named], surfaces: &[Named], s: &Settings) -> Result<Swat
 
 /// The pixels of every job, jobs dealt round-robin to the threads (so each
 /// gets a mix of cheap and costly swatches).
-fn run_jobs(jobs: &[Job], s: &Settings) -> Result<Vec<Srgb8>, Error> {
+fn run_jobs(jobs: &[Job], s: &SwatchOptions) -> Result<Vec<Srgb8>, StudyError> {
     let area = s.size * s.size;
     let mut pixels = vec![Srgb8::default(); jobs.len() * area];
     if area == 0 {
@@ -250,7 +260,7 @@ fn run_jobs(jobs: &[Job], s: &Settings) -> Result<Vec<Srgb8>, Error> {
 
 /// Fills swatch `index`: every pixel of a noisy one its own estimate, seeded
 /// from the base seed and the pixel's number in the whole sheet.
-fn fill(job: &Job, index: usize, swatch: &mut [Srgb8], seed: u64) -> Result<(), Error> {
+fn fill(job: &Job, index: usize, swatch: &mut [Srgb8], seed: u64) -> Result<(), StudyError> {
     match job {
         Job::Flat(pixel) => swatch.fill(*pixel),
         Job::Noisy { prepared, surface, samples, look } => {

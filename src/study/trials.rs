@@ -11,21 +11,23 @@
 //!
 //! ```
 //! use std::num::NonZeroUsize;
-//! use speclab::{data, study::{method::Method, trials}};
+//! use speclab::{data::{lights, patches}, study::{method::Method, trials}};
 //! let n = NonZeroUsize::new(64).unwrap();
 //! let t = NonZeroUsize::new(200).unwrap();
-//! let hero = trials::method(&data::D65, &data::F4, Method::HERO, n, t, 1)?;
-//! let random = trials::method(&data::D65, &data::F4, Method::RANDOM, n, t, 1)?;
+//! let hero = trials::method(&lights::D65, &patches::F4, Method::HERO, n, t, 1)?;
+//! let random = trials::method(&lights::D65, &patches::F4, Method::RANDOM, n, t, 1)?;
 //! assert!(hero.rms_de00 < random.rms_de00);
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
 use std::num::NonZeroUsize;
 
+use crate::color::Xyz;
 use crate::sampling::reference;
+use crate::spectrum::TabulatedSpectrum;
+use crate::study::error::StudyError;
 use crate::study::method::{Method, derive_seed};
 use crate::study::perceptual;
-use crate::{Error, TabulatedSpectrum, Xyz};
 
 /// What a study measured.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -67,7 +69,7 @@ pub fn method(
     samples: NonZeroUsize,
     trials: NonZeroUsize,
     base_seed: u64,
-) -> Result<Stats, Error> {
+) -> Result<Stats, StudyError> {
     let trials = if method.is_random() { trials } else { NonZeroUsize::MIN };
     let reference = reference::xyz(light, surface);
     let white = reference::white(light);
@@ -83,22 +85,22 @@ pub fn run<F>(
     trials: NonZeroUsize,
     base_seed: u64,
     estimate: F,
-) -> Result<Stats, Error>
+) -> Result<Stats, StudyError>
 where
-    F: Fn(u64) -> Result<Xyz, Error> + Sync,
+    F: Fn(u64) -> Result<Xyz, StudyError> + Sync,
 {
     let estimates = parallel_trials(trials.get(), base_seed, &estimate)?;
     Ok(summarise(&estimates, reference, white))
 }
 
 /// Estimates for trials `0..trials`, in trial order, on all cores.
-fn parallel_trials<F>(trials: usize, base_seed: u64, estimate: &F) -> Result<Vec<Xyz>, Error>
+fn parallel_trials<F>(trials: usize, base_seed: u64, estimate: &F) -> Result<Vec<Xyz>, StudyError>
 where
-    F: Fn(u64) -> Result<Xyz, Error> + Sync,
+    F: Fn(u64) -> Result<Xyz, StudyError> + Sync,
 {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(trials);
     let chunk = trials.div_ceil(threads);
-    let parts: Vec<Result<Vec<Xyz>, Error>> = std::thread::scope(|scope| {
+    let parts: Vec<Result<Vec<Xyz>, StudyError>> = std::thread::scope(|scope| {
         let handles: Vec<_> = (0..threads)
             .map(|i| {
                 let range = (i * chunk) as u64..((i + 1) * chunk).min(trials) as u64;

@@ -16,21 +16,21 @@
 //! the result agrees with a finer rule to about 1e-10 relative.
 //!
 //! ```
-//! use speclab::{data, study::variance, sampling::pdf::LightPdf};
-//! let one = variance::hero::<1>(&data::D65, &data::A1);
-//! let four = variance::hero::<4>(&data::D65, &data::A1);
+//! use speclab::{data::{lights, patches}, study::variance, sampling::pdf::LightPdf};
+//! let one = variance::hero::<1>(&lights::D65, &patches::A1);
+//! let four = variance::hero::<4>(&lights::D65, &patches::A1);
 //! assert!(four.y < one.y / 4.0); // hero beats four independent wavelengths
-//! let f11 = LightPdf::light(&data::F11)?;
-//! let following = variance::hero_with::<1>(&data::F11, &data::A1, &f11);
-//! assert!(following.y < variance::hero::<1>(&data::F11, &data::A1).y / 10.0);
+//! let f11 = LightPdf::light(&lights::F11)?;
+//! let following = variance::hero_with::<1>(&lights::F11, &patches::A1, &f11);
+//! assert!(following.y < variance::hero::<1>(&lights::F11, &patches::A1).y / 10.0);
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+use crate::color::Xyz;
 use crate::sampling::pdf::{Uniform, WavelengthPdf};
-use crate::sampling::quadrature::{self, GAUSS_8};
 use crate::sampling::reference;
-use crate::spectrum::observer;
-use crate::{LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, Xyz};
+use crate::spectrum::quadrature;
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, observer};
 
 /// Per-channel variance of one `HeroSample<K>` estimate of
 /// `light × surface`, wavelengths uniform (K = 1: one uniformly random
@@ -47,15 +47,15 @@ pub fn hero<const K: usize>(light: &TabulatedSpectrum, surface: &TabulatedSpectr
 pub fn hero_with<const K: usize>(
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
-    pdf: &impl WavelengthPdf,
+    pdf: &(impl WavelengthPdf + ?Sized),
 ) -> Xyz {
     let period = 1.0 / K as f64;
     let g = |u: f64| {
         let mut sum = [0.0; 3];
         for j in 0..K {
             let lambda = pdf.sample(u + j as f64 * period);
-            let f =
-                observer::xyz_bar(lambda) * (light.eval(lambda) * surface.eval(lambda) * pdf.inv_pdf(lambda));
+            let f = Xyz::from(observer::xyz_bar(lambda))
+                * (light.eval(lambda) * surface.eval(lambda) * pdf.inv_pdf(lambda));
             for (s, c) in sum.iter_mut().zip(f.to_array()) {
                 *s += c;
             }
@@ -78,7 +78,7 @@ pub fn hero_with<const K: usize>(
         .flat_map(|w| (0..4).map(move |i| w[0] + (w[1] - w[0]) * f64::from(i) / 4.0))
         .chain([period])
         .collect();
-    let [x2, y2, z2] = quadrature::integrate(&GAUSS_8, &fine, |u| g(u).map(|v| v * v));
+    let [x2, y2, z2] = quadrature::integrate(quadrature::gauss(8), &fine, |u| g(u).map(|v| v * v));
     let mean = reference::xyz(light, surface);
     let m2 = Xyz::new(x2, y2, z2) * K as f64;
     Xyz::new(m2.x - mean.x * mean.x, m2.y - mean.y * mean.y, m2.z - mean.z * mean.z)

@@ -21,7 +21,7 @@ pub fn chart_csv(out: &mut impl Write, points: &[Point]) -> io::Result<()> {
             out,
             "{},{},{pdf},{strata},{},{},{},{},{},{},{},{}",
             p.light,
-            method.name(),
+            method,
             method.reported_samples(count),
             method.evaluations(count),
             p.cost.per_estimate_ns,

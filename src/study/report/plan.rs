@@ -84,7 +84,7 @@ mod tests {
     use crate::study::scene::{builtin_lights, builtin_surfaces};
 
     fn candidate(count: usize, ns: f64, verdict: Verdict) -> Candidate {
-        let config = Config::new(Method::RegularBox, NonZeroUsize::new(count).unwrap());
+        let config = Config::new(Method::BOX, NonZeroUsize::new(count).unwrap());
         Candidate { config, cost: Cost { per_estimate_ns: ns, preparation_ns: 0.5 }, verdict }
     }
 

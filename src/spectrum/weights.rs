@@ -1,0 +1,256 @@
+//! Exact reference weights: the XYZ of a fixed light times any reflectance
+//! tabulated on a given grid, as a dot product with the reflectance's
+//! samples.
+//!
+//! The interpolants are linear in their samples. On segment k the cubic is
+//! `R(λ) = Σⱼ r₍ₛ₊ⱼ₎·ℓⱼ(λ)`, with `ℓⱼ` the Lagrange basis of the segment's
+//! four-sample stencil starting at s (linear: two samples). So
+//!
+//! `∫ L·R·c̄ dλ = Σₖ Σⱼ r₍ₛ₊ⱼ₎·Wₖⱼ`, with `Wₖⱼ = ∫ over segment k of L·c̄·ℓⱼ`,
+//!
+//! and summing the segments that share a sample gives one weight per
+//! sample and channel. Each `Wₖⱼ` is integrated exactly (Gauss–Legendre
+//! between the breaks of L and c̄; degree 1 + 3 + 3 = 7). Where the
+//! reflectance's clamp acts on a segment, R is not `Σ r·ℓ` there: that
+//! segment's term is replaced by its exact integral ([`segment_exact`]).
+//!
+//! For reflectances given as raw samples, two tests tell when a segment's
+//! cubic provably stays in `[0, 1]`. Exactly ([`Weights::hull`]): its
+//! Bernstein coefficients are linear in the samples, and the cubic lies in
+//! their convex hull. Faster, on equidistant grids ([`Weights::margins`]):
+//! the inner Bernstein coefficients differ from the linear interpolation at
+//! ⅓ and ⅔ by a combination of the stencil's two second divided
+//! differences, so `min(yₖ, yₖ₊₁) − Cₖ·S ≥ 0` and `max(yₖ, yₖ₊₁) + Cₖ·S ≤ 1`,
+//! with S the larger |difference|, clear segment k.
+//!
+//! A light computes its weights once, on first use, and keeps them
+//! (`TabulatedSpectrum::weights`); `sampling::PreparedLight` applies them.
+
+use crate::spectrum::interp::{self, Coeffs};
+use crate::spectrum::observer;
+use crate::spectrum::piecewise::{View, pieces_into};
+use crate::spectrum::quadrature::{gauss, integrate};
+use crate::spectrum::validate::Interpolation;
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+
+/// Exact weights of one light for reflectances on one grid.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Weights {
+    /// The reflectances' wavelengths, nm.
+    grid: Vec<f64>,
+    /// The reflectances' interpolation.
+    cubic: bool,
+    /// The integration range: 380–730 nm ∩ the light's and the grid's support.
+    range: [f64; 2],
+    /// Per sample, per channel.
+    samples: Vec<[f64; 3]>,
+    /// Per segment, per stencil sample (4; linear uses 2), per channel.
+    segments: Vec<[[f64; 3]; 4]>,
+    /// Per segment: the stencil vectors giving the cubic's inner Bernstein
+    /// coefficients b₁ and b₂ (b₀ and b₃ are the segment's samples).
+    hull: Vec<[[f64; 4]; 2]>,
+    /// Per segment: the |coefficient sum| turning the stencil's two second
+    /// divided differences into a bound on the inner Bernstein coefficients'
+    /// distance from the linear interpolation (0 for linear grids).
+    margins: Vec<f64>,
+}
+
+impl Weights {
+    /// The weights of `light` for reflectances interpolated by `interpolation`
+    /// on `grid` (strictly increasing, enough samples).
+    pub(crate) fn compute(light: &View, grid: &[f64], interpolation: Interpolation) -> Self {
+        let cmf = &observer::views();
+        let cubic = interpolation == Interpolation::Cubic;
+        let n = grid.len();
+        let range = [
+            LAMBDA_MIN.max(light.lambda[0]).max(grid[0]),
+            LAMBDA_MAX.min(light.lambda[light.lambda.len() - 1]).min(grid[n - 1]),
+        ];
+        let mut scratch = Vec::new();
+        let segments: Vec<[[f64; 3]; 4]> = (0..n - 1)
+            .map(|k| {
+                let (s, width) = stencil(cubic, k, n);
+                let nodes = &grid[s..s + width];
+                if !pieces_into(&mut scratch, grid[k], grid[k + 1], range, [light, &cmf[0], &cmf[1], &cmf[2]])
+                {
+                    return [[0.0; 3]; 4];
+                }
+                let flat: [f64; 12] = integrate(gauss(5), &scratch, |x| {
+                    let (basis, l) = (lagrange(nodes, x), light.eval(x));
+                    let c = [cmf[0].eval(x), cmf[1].eval(x), cmf[2].eval(x)].map(|c| c * l);
+                    std::array::from_fn(|i| c[i % 3] * basis[i / 3])
+                });
+                std::array::from_fn(|j| std::array::from_fn(|c| flat[3 * j + c]))
+            })
+            .collect();
+        let mut samples = vec![[0.0; 3]; n];
+        for (k, w) in segments.iter().enumerate() {
+            let (s, width) = stencil(cubic, k, n);
+            for (j, wj) in w.iter().enumerate().take(width) {
+                for c in 0..3 {
+                    samples[s + j][c] += wj[c];
+                }
+            }
+        }
+        let hull: Vec<[[f64; 4]; 2]> = (0..n - 1).map(|k| bernstein(grid, k, cubic)).collect();
+        let margins = if cubic { margins(grid, &hull) } else { vec![0.0; n - 1] };
+        Weights { grid: grid.to_vec(), cubic, range, samples, segments, hull, margins }
+    }
+
+    /// The reflectances' wavelengths, nm.
+    #[must_use]
+    pub(crate) fn grid(&self) -> &[f64] {
+        &self.grid
+    }
+
+    /// The reflectances' interpolation.
+    #[must_use]
+    pub(crate) fn interpolation(&self) -> Interpolation {
+        if self.cubic { Interpolation::Cubic } else { Interpolation::Linear }
+    }
+
+    /// The integration range, nm.
+    pub(crate) fn range(&self) -> [f64; 2] {
+        self.range
+    }
+
+    /// One weight per sample and channel.
+    pub(crate) fn samples(&self) -> &[[f64; 3]] {
+        &self.samples
+    }
+
+    /// Segment `k`'s weights per stencil sample, and where its stencil starts.
+    pub(crate) fn segment(&self, k: usize) -> (&[[f64; 3]], usize) {
+        let (s, width) = stencil(self.cubic, k, self.grid.len());
+        (&self.segments[k][..width], s)
+    }
+
+    /// Segment `k`'s Bernstein stencil vectors (cubic grids).
+    pub(crate) fn hull(&self) -> &[[[f64; 4]; 2]] {
+        &self.hull
+    }
+
+    /// Per segment, the margin `Cₖ` of `min(yₖ, yₖ₊₁) − Cₖ·S ≥ 0`, with S
+    /// the larger |second divided difference| of the segment's stencil.
+    pub(crate) fn margins(&self) -> &[f64] {
+        &self.margins
+    }
+
+    /// For an equidistant grid of step h, the step (margins divided by
+    /// `2h²` apply to plain second differences `y₀ − 2y₁ + y₂`, which are
+    /// `2h²·[x₀, x₁, x₂]y`). `None` for other grids.
+    pub(crate) fn step(&self) -> Option<f64> {
+        let g = &self.grid;
+        let h = (g[g.len() - 1] - g[0]) / (g.len() - 1) as f64;
+        g.windows(2).all(|w| ((w[1] - w[0]) - h).abs() <= 1e-9 * h).then_some(h)
+    }
+}
+
+/// The stencil of segment `k` of `n` samples: first sample and width.
+fn stencil(cubic: bool, k: usize, n: usize) -> (usize, usize) {
+    if cubic { (interp::stencil(k, n), 4) } else { (k, 2) }
+}
+
+/// The Lagrange basis through `nodes` (2 or 4 of them) at `x`; unused
+/// entries 0.
+fn lagrange(nodes: &[f64], x: f64) -> [f64; 4] {
+    std::array::from_fn(|j| {
+        if j >= nodes.len() {
+            return 0.0;
+        }
+        let mut l = 1.0;
+        for (m, &xm) in nodes.iter().enumerate() {
+            if m != j {
+                l *= (x - xm) / (nodes[j] - xm);
+            }
+        }
+        l
+    })
+}
+
+/// For the cubic of segment `k` of `grid`: the vectors β₁, β₂ with
+/// `b₁ = β₁·y`, `b₂ = β₂·y` over the stencil samples `y` (Bernstein
+/// coefficients on the segment: `b₁ = p(0) + h·p'(0)/3`,
+/// `b₂ = p(h) − h·p'(h)/3`). Zero for linear grids (never used there).
+fn bernstein(grid: &[f64], k: usize, cubic: bool) -> [[f64; 4]; 2] {
+    if !cubic {
+        return [[0.0; 4]; 2];
+    }
+    let (s, h) = (interp::stencil(k, grid.len()), grid[k + 1] - grid[k]);
+    // The basis function ℓⱼ as a cubic in t = λ − λₖ, for each j.
+    let basis: [interp::Coeffs; 4] = std::array::from_fn(|j| {
+        let y: [f64; 4] = std::array::from_fn(|i| f64::from(u8::from(i == j)));
+        interp::cubic_segment(&grid[s..s + 4], &y, k - s)
+    });
+    let b1 = basis.map(|c| c[0] + h * c[1] / 3.0);
+    let b2 =
+        basis.map(|c| interp::segment_value(c, h) - h * (c[1] + h * (2.0 * c[2] + 3.0 * h * c[3])) / 3.0);
+    [b1, b2]
+}
+
+/// The coefficients of the second divided difference `[x₀, x₁, x₂]`.
+fn divided_difference(x: [f64; 3]) -> [f64; 3] {
+    [
+        1.0 / ((x[0] - x[1]) * (x[0] - x[2])),
+        1.0 / ((x[1] - x[0]) * (x[1] - x[2])),
+        1.0 / ((x[2] - x[0]) * (x[2] - x[1])),
+    ]
+}
+
+/// Per segment, the larger `|α| + |β|` of its two inner Bernstein
+/// coefficients, where `b − (linear interpolation at ⅓ or ⅔) =
+/// α·[x₀,x₁,x₂]y + β·[x₁,x₂,x₃]y` over the segment's stencil x₀..x₃. (A
+/// functional on four nodes that vanishes on lines is such a combination;
+/// α and β follow from its first and last coefficients, where only one of
+/// the two differences has a term.)
+fn margins(grid: &[f64], hull: &[[[f64; 4]; 2]]) -> Vec<f64> {
+    let n = grid.len();
+    hull.iter()
+        .enumerate()
+        .map(|(k, beta)| {
+            let mut worst = 0.0f64;
+            let s = interp::stencil(k, n);
+            let (first, last) = (
+                divided_difference([grid[s], grid[s + 1], grid[s + 2]]),
+                divided_difference([grid[s + 1], grid[s + 2], grid[s + 3]]),
+            );
+            for (b, share) in beta.iter().zip([1.0 / 3.0, 2.0 / 3.0]) {
+                // The linear interpolation at `share` of the segment, on the stencil.
+                let mut gamma = *b;
+                gamma[k - s] -= 1.0 - share;
+                gamma[k + 1 - s] -= share;
+                let (alpha, beta) = (gamma[0] / first[0], gamma[3] / last[2]);
+                worst = worst.max(alpha.abs() + beta.abs());
+            }
+            worst
+        })
+        .collect()
+}
+
+/// The exact `∫ L·clamp(p)·c̄` over segment `[knot, next]` ∩ `range`, where
+/// `p` is the reflectance's polynomial `c` (in `t = λ − knot`), clamped to
+/// `bounds`: pieces between the breaks of the light, the observer and the
+/// clamp's crossings. `scratch` is reused between calls.
+pub(crate) fn segment_exact(
+    light: &View,
+    [knot, next]: [f64; 2],
+    c: Coeffs,
+    bounds: [f64; 2],
+    range: [f64; 2],
+    scratch: &mut Vec<f64>,
+) -> [f64; 3] {
+    let cmf = &observer::views();
+    if !pieces_into(scratch, knot, next, range, [light, &cmf[0], &cmf[1], &cmf[2]]) {
+        return [0.0; 3];
+    }
+    let (a, b) = (scratch[0], scratch[scratch.len() - 1]);
+    let (crossings, count) = interp::crossings(c, bounds, next - knot);
+    scratch.extend(crossings[..count].iter().map(|t| knot + t).filter(|&x| x > a && x < b));
+    scratch.sort_by(f64::total_cmp);
+    scratch.dedup();
+    integrate(gauss(5), scratch, |x| {
+        let r = interp::clamp(interp::segment_value(c, x - knot), bounds);
+        let lr = light.eval(x) * r;
+        [cmf[0].eval(x) * lr, cmf[1].eval(x) * lr, cmf[2].eval(x) * lr]
+    })
+}

@@ -1,0 +1,136 @@
+//! Compile-time data for your own crate: spectrum files turned into
+//! `static` `speclab::TabulatedSpectrum`s by a build script, with the
+//! parser, validation and error messages of run-time loading
+//! (speclab's `io::Load`). speclab's own `build.rs` makes its built-in data
+//! (`speclab::data`) with this module.
+//!
+//! A file is read (at most 64 MiB), its format detected (brace, columns or
+//! JSON), its samples validated for the role and checked to cover
+//! 380–730 nm, and the interpolant's coefficients and breaks computed.
+//! [`Codegen::source`] is Rust code declaring one `pub static` per spectrum;
+//! include it in your crate. A bad file fails your build with
+//! `file:line:column: expected …, found …`.
+//!
+//! In your `Cargo.toml`, this crate is a build-dependency and speclab a
+//! dependency (`default-features = false` is enough). Your `build.rs`:
+//!
+//! ```no_run
+//! use speclab_tables::{Codegen, Role};
+//! fn main() -> Result<(), speclab_tables::Error> {
+//!     let mut code = Codegen::new();
+//!     code.file("data/lamp.csv", "LAMP", Role::Light)?;
+//!     println!("cargo:rerun-if-changed=data/lamp.csv");
+//!     let out = std::path::Path::new(&std::env::var("OUT_DIR").unwrap()).join("spectra.rs");
+//!     std::fs::write(out, code.source()).unwrap();
+//!     Ok(())
+//! }
+//! ```
+//!
+//! and in your crate: `include!(concat!(env!("OUT_DIR"), "/spectra.rs"));`,
+//! after which `LAMP` is a `static` `speclab::TabulatedSpectrum`. A complete
+//! crate is speclab's `examples/build-data/`.
+//!
+//! ```
+//! use speclab_tables::{Codegen, Role};
+//! let mut code = Codegen::new();
+//! code.text("380 1\n730 2\n", "lamp.txt", "LAMP", Role::Light)?;
+//! assert!(code.source().contains("pub static LAMP: ::speclab::TabulatedSpectrum"));
+//! let err = code.text("380 1\n730 2\n", "lamp.txt", "my lamp", Role::Light).unwrap_err();
+//! assert_eq!(err.to_string(), "expected a Rust identifier, found \"my lamp\"");
+//! # Ok::<(), speclab_tables::Error>(())
+//! ```
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use crate::error::Error;
+use crate::interp;
+use crate::read;
+use crate::text::Samples;
+use crate::validate::{Interpolation, Role};
+
+/// Rust source declaring spectra as statics, built up one file at a time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Codegen {
+    crate_path: String,
+    source: String,
+}
+
+impl Default for Codegen {
+    fn default() -> Self {
+        Codegen::new()
+    }
+}
+
+impl Codegen {
+    /// Empty source that names speclab as `::speclab`.
+    #[must_use]
+    pub fn new() -> Self {
+        Codegen { crate_path: "::speclab".into(), source: String::new() }
+    }
+
+    /// The same, naming speclab by `path` in the generated code (for
+    /// example `crate`, inside speclab itself).
+    #[must_use]
+    pub fn with_crate_path(self, path: &str) -> Self {
+        Codegen { crate_path: path.into(), ..self }
+    }
+
+    /// Adds the spectrum in the file at `path` as `pub static {name}`,
+    /// interpolated as `role` prescribes.
+    pub fn file(&mut self, path: impl AsRef<Path>, name: &str, role: Role) -> Result<&mut Self, Error> {
+        let path = path.as_ref();
+        self.text(&read::file(path)?, &path.display().to_string(), name, role)
+    }
+
+    /// Adds the spectrum in `text` as `pub static {name}`; `origin` names the
+    /// text in errors and in the static's documentation.
+    pub fn text(&mut self, text: &str, origin: &str, name: &str, role: Role) -> Result<&mut Self, Error> {
+        if !is_identifier(name) {
+            return Err(Error::Identifier { name: name.into() });
+        }
+        let interpolation = role.interpolation();
+        let samples = read::samples(text, origin, role, interpolation, None)?;
+        self.spectrum(name, origin, role, interpolation, &samples);
+        Ok(self)
+    }
+
+    /// The generated source so far.
+    #[must_use]
+    pub fn source(&self) -> &str {
+        &self.source
+    }
+
+    fn spectrum(&mut self, name: &str, origin: &str, role: Role, interpolation: Interpolation, s: &Samples) {
+        let coeffs = interp::coeffs(interpolation, &s.lambda, &s.values);
+        let brk = interp::breaks(&s.lambda, &coeffs, role.bounds());
+        let prefix = interp::prefix(&s.lambda, &coeffs, &brk, role.bounds());
+        let clean = interp::clean(&s.lambda, &coeffs, &brk, role.bounds());
+        let (n, b, p) = (s.lambda.len(), brk.len(), &self.crate_path);
+        let out = &mut self.source;
+        // Writing to a String cannot fail.
+        let _ = writeln!(out, "pub const {name}_LAMBDA: [f64; {n}] = {:?};", s.lambda);
+        let _ = writeln!(out, "pub const {name}_VALUES: [f64; {n}] = {:?};", s.values);
+        let _ = writeln!(out, "pub const {name}_COEFFS: [[f64; 4]; {}] = {coeffs:?};", n - 1);
+        let _ = writeln!(out, "pub const {name}_BREAKS: [f64; {b}] = {brk:?};");
+        let _ = writeln!(out, "pub const {name}_PREFIX: [f64; {n}] = {prefix:?};");
+        let _ = writeln!(out, "pub const {name}_CLEAN: [bool; {}] = {clean:?};", n - 1);
+        let _ = writeln!(
+            out,
+            "/// {role:?} spectrum from {origin:?}.\n\
+             pub static {name}: {p}::TabulatedSpectrum = {p}::TabulatedSpectrum::from_static(\n    \
+             {p}::Role::{role:?},\n    {p}::Interpolation::{interpolation:?},\n    \
+             {p}::spectrum::Tables {{ lambda: &{name}_LAMBDA, values: &{name}_VALUES, \
+             coeffs: &{name}_COEFFS, breaks: &{name}_BREAKS, prefix: &{name}_PREFIX, clean: &{name}_CLEAN }},\n)\n\
+             .expect(\"speclab codegen: inconsistent tables for {name}\");"
+        );
+    }
+}
+
+/// True for `[A-Za-z_][A-Za-z0-9_]*`, other than `_`.
+fn is_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && name != "_"
+}

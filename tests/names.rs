@@ -1,0 +1,54 @@
+//! Named choices read and write the names used on command lines, in tables
+//! and in CSV (`Display` and `FromStr`, any case), and an unknown name is an
+//! error listing the names that exist.
+
+use std::fmt::Display;
+use std::str::FromStr;
+
+use speclab::Error;
+use speclab::color::GamutMap;
+use speclab::data::{Light, Patch};
+use speclab::sampling::buckets::BucketRule;
+use speclab::sampling::strata::Strata;
+
+/// Every choice's name reads back as the choice, in any case; names are
+/// distinct; an unknown name lists them all.
+fn round_trip<T>(all: &[T], names: &[&str], what: &str)
+where
+    T: Copy + PartialEq + std::fmt::Debug + Display + FromStr<Err = Error>,
+{
+    let shown: Vec<String> = all.iter().map(T::to_string).collect();
+    assert_eq!(shown, names, "{what}");
+    for (choice, name) in all.iter().zip(names) {
+        assert_eq!(name.parse::<T>().unwrap(), *choice);
+        assert_eq!(name.to_uppercase().parse::<T>().unwrap(), *choice);
+    }
+    let err = "nonsense".parse::<T>().unwrap_err();
+    let listed = match names.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => names.concat(),
+    };
+    assert_eq!(err.to_string(), format!("expected {what} ({listed}), found \"nonsense\""));
+    assert!("".parse::<T>().is_err());
+}
+
+#[test]
+fn core_choices() {
+    round_trip(&Light::ALL, &["A", "D65", "F11"], "a built-in light");
+    round_trip(&Patch::ALL, &["E2", "F4", "G4", "H4", "J4", "A1"], "a built-in patch");
+    round_trip(&Strata::ALL, &["none", "jitter", "kronecker"], "a strata");
+    round_trip(&GamutMap::ALL, &["clip", "chroma"], "a gamut map");
+    round_trip(&BucketRule::ALL, &["center", "box"], "a bucket rule");
+}
+
+#[cfg(feature = "study")]
+#[test]
+fn study_choices() {
+    use speclab::study::method::Method;
+    use speclab::study::remarks::Normalization;
+    use speclab::study::sampling::Pdf;
+    round_trip(&Pdf::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
+    round_trip(&Normalization::ALL, &["none", "power", "luminance"], "a normalisation");
+    let methods = ["reference", "random", "hero", "regular-center", "regular-box"];
+    round_trip(&Method::ALL, &methods, "a method");
+}

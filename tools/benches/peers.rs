@@ -1,0 +1,174 @@
+//! speclab's per-sample path beside two kernels of the kind renderers write
+//! (see `peers/kernels.rs`), and the rest of the speed targets, in one run,
+//! on the same spectra (F11 × H4). Prints the table the README quotes:
+//! medians over interleaved rounds, and ratios to the hand-tuned kernel
+//! taken within each run, the median of three runs.
+//!
+//! ```text
+//! cargo bench -p speclab-tools --bench peers
+//! ```
+
+#[path = "peers/harness.rs"]
+mod harness;
+#[path = "peers/kernels.rs"]
+mod kernels;
+
+use std::hint::black_box;
+
+use harness::{Case, measure, median};
+use kernels::{Pcg32, Tables, XorShift32};
+use speclab::sampling::{PreparedLight, reference};
+use speclab::{BoxAverage, Center, RegularSpectrum, TabulatedSpectrum, Xyz, data};
+
+/// Hero samples per batch.
+const N: usize = 1024;
+/// Spectra per batch conversion (a 256 × 256 texture).
+const SPECTRA: usize = 65_536;
+
+/// One row of the table: what, target, and how to read the measurement.
+struct Row {
+    what: &'static str,
+    target: &'static str,
+    unit: Unit,
+}
+
+#[derive(Clone, Copy)]
+enum Unit {
+    /// ns per unit, with its ratio to the hand-tuned kernel.
+    Ratio,
+    /// ns per call.
+    Nanos,
+    /// millions of spectra per second, and the ratio to row `.0`.
+    Throughput(Option<usize>),
+}
+
+fn main() {
+    let (light, surface) = (&data::lights::F11, &data::patches::H4);
+    let tables = Tables::new(light, surface);
+    let prepared = PreparedLight::for_grid(light, surface.lambda(), surface.interpolation()).expect("grid");
+    let reflectances = mixtures(SPECTRA);
+    let (lc, sc) =
+        (RegularSpectrum::<16, Center>::center(light), RegularSpectrum::<16, Center>::center(surface));
+    let rows = [
+        Row { what: "hand-tuned kernel, per wavelength", target: "", unit: Unit::Ratio },
+        Row { what: "pbrt-style kernel, per wavelength", target: "", unit: Unit::Ratio },
+        Row { what: "speclab hero K = 4, per wavelength", target: "≤ 1.5×", unit: Unit::Ratio },
+        Row { what: "speclab one random wavelength", target: "≤ 2×", unit: Unit::Ratio },
+        Row { what: "RegularSpectrum<16> multiply + to_xyz", target: "≤ 4 ns", unit: Unit::Nanos },
+        Row { what: "bucketing one spectrum, M = 16, centre", target: "≤ 40 ns", unit: Unit::Nanos },
+        Row { what: "bucketing one spectrum, M = 16, box", target: "≤ 150 ns", unit: Unit::Nanos },
+        Row { what: "exact reference, one pair", target: "≤ 1000 ns", unit: Unit::Nanos },
+        Row {
+            what: "batch, 36-sample reflectances, 1 thread",
+            target: "≥ 30 M/s",
+            unit: Unit::Throughput(None),
+        },
+        Row { what: "batch, 2 threads", target: "≥ 1.6× 1 thread", unit: Unit::Throughput(Some(8)) },
+    ];
+    let mut runs = Vec::new();
+    for run in 0..3 {
+        let (mut r1, mut r2, mut r3, mut r4) =
+            (XorShift32(0x9E37_79B9), XorShift32(0x9E37_79B9), Pcg32::new(7), XorShift32(0x1234_5678));
+        let (mut out, mut out2) = (vec![Xyz::ZERO; SPECTRA], vec![Xyz::ZERO; SPECTRA]);
+        let mut cases = [
+            Case::new("hand-tuned", || (black_box(kernels::hand_tuned_hero(&tables, N, &mut r1)), 4 * N).1),
+            Case::new("pbrt-style", || (black_box(kernels::pbrt_hero(&tables, N, &mut r3)), 4 * N).1),
+            Case::new("speclab hero", || {
+                (black_box(kernels::speclab_hero(light, surface, N, &mut r2)), 4 * N).1
+            }),
+            Case::new("speclab random", || {
+                (black_box(kernels::speclab_random(light, surface, N, &mut r4)), N).1
+            }),
+            Case::new("regular", || calls(|| (*black_box(&lc) * *black_box(&sc)).to_xyz())),
+            Case::new("centre", || calls(|| RegularSpectrum::<16, Center>::center(black_box(light)))),
+            Case::new("box", || calls(|| RegularSpectrum::<16, BoxAverage>::box_average(black_box(light)))),
+            Case::new("reference", || calls(|| reference::xyz(black_box(light), black_box(surface)))),
+            Case::new("batch 1", || batch(&prepared, &reflectances, &mut out, 1)),
+            Case::new("batch 2", || batch(&prepared, &reflectances, &mut out2, 2)),
+        ];
+        let ns = measure(&mut cases, 15, 20.0);
+        eprintln!(
+            "run {run}: {}",
+            cases.iter().zip(&ns).map(|(c, t)| format!("{} {t:.2}", c.name)).collect::<Vec<_>>().join(", ")
+        );
+        runs.push(ns);
+    }
+    print_table(&rows, &runs);
+    print_sizes(light, surface);
+}
+
+/// Calls `f` [`CALLS`] times (so that the harness's indirect call is spread
+/// over many); returns the number of calls.
+#[inline(always)]
+fn calls<T>(mut f: impl FnMut() -> T) -> usize {
+    for _ in 0..CALLS {
+        black_box(f());
+    }
+    CALLS
+}
+
+/// Calls per batch of the single-call cases.
+const CALLS: usize = 64;
+
+/// Converts `r` into `out` on `threads` threads; returns spectra converted.
+fn batch(prepared: &PreparedLight, r: &[f64], out: &mut [Xyz], threads: usize) -> usize {
+    if threads == 1 {
+        prepared.batch(r, out).expect("valid reflectances");
+        return out.len();
+    }
+    let per = out.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        for (r, out) in r.chunks(per * 36).zip(out.chunks_mut(per)) {
+            scope.spawn(move || prepared.batch(r, out).expect("valid reflectances"));
+        }
+    });
+    black_box(&out);
+    out.len()
+}
+
+/// `count` reflectances on the patches' grid: random convex mixtures of the
+/// six patches (smooth, in [0, 1], like a texture's).
+fn mixtures(count: usize) -> Vec<f64> {
+    let patches = data::Patch::ALL.map(|p| p.spectrum().values());
+    let mut rng = XorShift32(0x2545_F491);
+    let mut out = Vec::with_capacity(count * 36);
+    for _ in 0..count {
+        let w: [f64; 6] = std::array::from_fn(|_| f64::from(rng.next() >> 8));
+        let total: f64 = w.iter().sum();
+        out.extend((0..36).map(|i| patches.iter().zip(&w).map(|(p, w)| p[i] * w / total).sum::<f64>()));
+    }
+    out
+}
+
+fn print_table(rows: &[Row], runs: &[Vec<f64>]) {
+    let col = |i: usize| median(runs.iter().map(|r| r[i]).collect());
+    let ratio = |i: usize, to: usize| median(runs.iter().map(|r| r[i] / r[to]).collect());
+    println!("\nspeclab speed, median of 3 runs (F11 × H4; one core unless stated; ratios within each run)");
+    println!(
+        "last column: the time per wavelength, call or spectrum over the hand-tuned kernel's per wavelength"
+    );
+    println!("| path | target | measured | ÷ hand-tuned |\n|---|---|---|---|");
+    for (i, row) in rows.iter().enumerate() {
+        let measured = match row.unit {
+            Unit::Ratio => format!("{:.2} ns, {:.2}× hand-tuned", col(i), ratio(i, 0)),
+            Unit::Nanos => format!("{:.1} ns", col(i)),
+            Unit::Throughput(None) => format!("{:.1} M spectra/s", 1e3 / col(i)),
+            Unit::Throughput(Some(one)) => {
+                format!("{:.1} M spectra/s, {:.2}× 1 thread", 1e3 / col(i), ratio(one, i))
+            }
+        };
+        println!("| {} | {} | {measured} | {:.1}× |", row.what, row.target, ratio(i, 0));
+    }
+}
+
+/// The static tables the hot paths read, in bytes.
+fn print_sizes(light: &TabulatedSpectrum, surface: &TabulatedSpectrum) {
+    let spectrum = |s: &TabulatedSpectrum| s.lambda().len() * 8 + (s.lambda().len() - 1) * 32;
+    let observer = 80 * 96 + 81 * 8;
+    let weights = 36 * 24 + 35 * 96 + 35 * 64 + 36 * 8;
+    println!(
+        "\nhot tables: observer rows {observer} B; F11 {} B; H4 {} B; one light's reference weights {weights} B",
+        spectrum(light),
+        spectrum(surface)
+    );
+}

@@ -1,0 +1,146 @@
+//! Speed of the per-sample path, side by side in one run:
+//! one random wavelength, one hero sample (K = 4), a 16-bucket product and
+//! conversion (centre and box), the exact reference, the operations a path
+//! tracer does on a sample, and preparing bucketed spectra.
+//!
+//! And one light three ways (built in, scaled, loaded from its file): the
+//! same path at the same speed.
+//!
+//! ```text
+//! cargo bench -p speclab-tools --bench per_sample
+//! ```
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use speclab::sampling::reference;
+use speclab::{BoxAverage, Center, HeroSample, RegularSpectrum, SampledSpectrum, data};
+
+/// A fixed low-discrepancy sequence of u, so every run draws the same.
+fn sequence() -> impl FnMut() -> f64 {
+    let us: Vec<f64> = (0..1024).map(|i| (i as f64 * 0.618_033_988_749_895).fract()).collect();
+    let mut i = 0;
+    move || {
+        i = (i + 1) & 1023;
+        us[i]
+    }
+}
+
+fn per_sample(c: &mut Criterion) {
+    let (light, surface) = (&data::lights::F11, &data::patches::H4);
+    let mut group = c.benchmark_group("light×surface→XYZ");
+    let mut next_u = sequence();
+    group.bench_function("random K=1, one sample", |b| {
+        b.iter(|| {
+            let h = HeroSample::<1>::new(black_box(next_u()));
+            h.to_xyz(light.sample(&h) * surface.sample(&h))
+        })
+    });
+    group.bench_function("hero K=4, one sample", |b| {
+        b.iter(|| {
+            let h = HeroSample::<4>::new(black_box(next_u()));
+            h.to_xyz(light.sample(&h) * surface.sample(&h))
+        })
+    });
+    let (lc, sc) =
+        (RegularSpectrum::<16, Center>::center(light), RegularSpectrum::<16, Center>::center(surface));
+    group.bench_function("regular M=16 centre, multiply + to_xyz", |b| {
+        b.iter(|| (black_box(lc) * black_box(sc)).to_xyz())
+    });
+    let (lb, sb) = (
+        RegularSpectrum::<16, BoxAverage>::box_average(light),
+        RegularSpectrum::<16, BoxAverage>::box_average(surface),
+    );
+    group.bench_function("regular M=16 box, multiply + to_xyz", |b| {
+        b.iter(|| (black_box(lb) * black_box(sb)).to_xyz())
+    });
+    group.bench_function("exact reference", |b| {
+        b.iter(|| reference::xyz(black_box(light), black_box(surface)))
+    });
+    group.finish();
+    path_tracer_ops(c);
+    preparing(c);
+}
+
+/// Each operation a path tracer adds to the per-sample path, on K = 4.
+fn path_tracer_ops(c: &mut Criterion) {
+    let mut group = c.benchmark_group("path tracer ops, K=4");
+    let h = HeroSample::<4>::new(0.3);
+    let (le, albedo) = (data::lights::F11.sample(&h), data::patches::H4.sample(&h));
+    group.bench_function("HeroSample::with_pdf", |b| {
+        b.iter(|| HeroSample::from_wavelengths(black_box(*h.lambda()), black_box(h.pdf())))
+    });
+    group.bench_function("terminate_secondary", |b| {
+        b.iter(|| {
+            let mut t = black_box(h);
+            t.terminate_secondary();
+            t
+        })
+    });
+    group.bench_function("bounce: L += beta * Le; beta *= albedo", |b| {
+        b.iter(|| {
+            let (mut l, mut beta) =
+                (black_box(SampledSpectrum::<4>::zero()), black_box(SampledSpectrum::splat(1.0)));
+            l += beta * black_box(le);
+            beta *= black_box(albedo);
+            (l, beta)
+        })
+    });
+    group.bench_function("safe_div by the pdf", |b| {
+        b.iter(|| black_box(le).safe_div(black_box(SampledSpectrum::new(h.pdf()))))
+    });
+    group.bench_function("average + max_value + is_black", |b| {
+        b.iter(|| {
+            let v = black_box(le);
+            (v.average(), v.max_value(), v.is_black())
+        })
+    });
+    group.bench_function("y (luminance alone)", |b| b.iter(|| black_box(h).y(black_box(le))));
+    group.bench_function("to_xyz", |b| b.iter(|| black_box(h).to_xyz(black_box(le))));
+    group.finish();
+}
+
+fn preparing(c: &mut Criterion) {
+    let light = &data::lights::F11;
+    let mut prep = c.benchmark_group("preparing a spectrum (once per spectrum)");
+    prep.bench_function("centre buckets M=16", |b| {
+        b.iter(|| RegularSpectrum::<16, Center>::center(black_box(light)))
+    });
+    prep.bench_function("box buckets M=16", |b| {
+        b.iter(|| RegularSpectrum::<16, BoxAverage>::box_average(black_box(light)))
+    });
+    prep.finish();
+}
+
+criterion_group!(benches, per_sample);
+/// One light three ways: built in, scaled by 1 (a new value, computed from
+/// the built-in one) and loaded from its file. Each keeps its own reference
+/// weights after the first call and builds its own pdf table.
+fn same_light_three_ways(c: &mut Criterion) {
+    use speclab::io::Load;
+    use speclab::sampling::pdf::LightPdf;
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../data/illuminant_f11.txt");
+    let scaled = data::lights::F11.scaled(1.0).expect("finite");
+    let loaded = Load::new(speclab::Role::Light).file(path).expect("valid data");
+    let mut group = c.benchmark_group("F11 three ways");
+    for (name, light) in [("built-in", &data::lights::F11), ("scaled", &scaled), ("loaded", &loaded)] {
+        group.bench_function(format!("reference::xyz {name}"), |b| {
+            b.iter(|| reference::xyz(black_box(light), black_box(&data::patches::H4)))
+        });
+        group.bench_function(format!("LightPdf::light {name}"), |b| {
+            b.iter(|| LightPdf::light(black_box(light)))
+        });
+        let pdf = LightPdf::light(light).expect("bright");
+        let mut next_u = sequence();
+        group.bench_function(format!("hero K=4 from the light pdf {name}"), |b| {
+            b.iter(|| {
+                let h = HeroSample::<4>::from_pdf(black_box(next_u()), &pdf);
+                h.to_xyz(light.sample(&h) * data::patches::H4.sample(&h))
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(three_ways, same_light_three_ways);
+criterion_main!(benches, three_ways);
