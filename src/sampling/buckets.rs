@@ -138,8 +138,8 @@ pub(crate) fn dot4(n: usize, mut term: impl FnMut(usize) -> f64) -> f64 {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Buckets {
     rule: BucketRule,
-    /// Per bucket, `[x̄ᵢ, ȳᵢ, z̄ᵢ]`.
-    observer: Vec<[f64; 3]>,
+    /// x̄ᵢ, ȳᵢ and z̄ᵢ as three rows of M (one dot product each).
+    observer: [Vec<f64>; 3],
 }
 
 impl Buckets {
@@ -148,13 +148,15 @@ impl Buckets {
         if !(1..=MAX_BUCKETS).contains(&m) {
             return Err(Error::BucketCount { m, max: MAX_BUCKETS });
         }
-        Ok(Buckets { rule, observer: (0..m).map(|i| rule.observer(i, m)).collect() })
+        let table: Vec<[f64; 3]> = (0..m).map(|i| rule.observer(i, m)).collect();
+        let observer = [0, 1, 2].map(|c| table.iter().map(|row| row[c]).collect());
+        Ok(Buckets { rule, observer })
     }
 
     /// The number of buckets, M.
     #[must_use]
     pub fn m(&self) -> usize {
-        self.observer.len()
+        self.observer[0].len()
     }
 
     /// The rule.
@@ -176,10 +178,27 @@ impl Buckets {
     /// allocating. Missing values (a factor shorter than M) count as 0.
     #[must_use]
     pub fn xyz_of_product(&self, factors: &[&[f64]]) -> Xyz {
-        let value = |i: usize| factors.iter().fold(1.0, |p, f| p * f.get(i).copied().unwrap_or(0.0));
         let m = self.m();
-        let channel = |c: usize| dot4(m, |i| value(i) * self.observer[i][c]);
-        Xyz::new(channel(0), channel(1), channel(2)) * (LAMBDA_WIDTH / m as f64)
+        let mut product = [1.0; MAX_BUCKETS];
+        let product = &mut product[..m];
+        for f in factors {
+            let (known, missing) = product.split_at_mut(f.len().min(m));
+            for (p, v) in known.iter_mut().zip(*f) {
+                *p *= v;
+            }
+            missing.fill(0.0);
+        }
+        // Three dot products in one pass, each in four interleaved partial
+        // sums (the same order as `RegularSpectrum::to_xyz`, so the same bits).
+        let [x, y, z] = &self.observer;
+        let mut acc = [[0.0; 4]; 3];
+        for (i, (((p, x), y), z)) in product.iter().zip(x).zip(y).zip(z).enumerate() {
+            acc[0][i % 4] += p * x;
+            acc[1][i % 4] += p * y;
+            acc[2][i % 4] += p * z;
+        }
+        let [x, y, z] = acc.map(|a| (a[0] + a[2]) + (a[1] + a[3]));
+        Xyz::new(x, y, z) * (LAMBDA_WIDTH / m as f64)
     }
 
     /// XYZ of `light × surface` bucketed by this rule.
