@@ -77,6 +77,23 @@ pub enum Error {
     /// A light with no power where the observer sees, within 380–730 nm: no
     /// wavelength pdf can follow it.
     DarkLight,
+    /// A blackbody temperature that is not finite and positive (kelvin).
+    Temperature {
+        /// The temperature given, K.
+        kelvin: f64,
+    },
+    /// A colour that is not an albedo: linear sRGB components must lie in
+    /// [0, 1].
+    Albedo {
+        /// The components given.
+        rgb: [f64; 3],
+    },
+    /// A resampling step that is not finite and positive, or too fine
+    /// (nanometres).
+    Step {
+        /// The step given, nm.
+        step: f64,
+    },
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
         /// What was looked up, e.g. `a built-in light`.
@@ -110,6 +127,15 @@ impl fmt::Display for Error {
             Error::DarkLight => {
                 write!(f, "expected a light with power where the observer sees (380-730 nm), found none")
             }
+            Error::Temperature { kelvin } => {
+                write!(f, "expected a finite positive temperature in kelvin, found {kelvin}")
+            }
+            Error::Albedo { rgb } => write!(
+                f,
+                "expected linear sRGB components in [0, 1], found ({}, {}, {})",
+                rgb[0], rgb[1], rgb[2]
+            ),
+            Error::Step { step } => write!(f, "expected a step from 0.01 to 350 nm, found {step}"),
             Error::UnknownName { what, expected, found } => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))
             }

@@ -12,6 +12,9 @@
 //!   mapping (clip, or keep hue and luminance), encoding, 8 bits; linear
 //!   and encoded sRGB as different types.
 //! - [`adaptation`]: Bradford chromatic adaptation between whites.
+//! - [`lab`]: CIELAB relative to a white (ΔE00 is the study's).
+//! - [`upsample`]: an RGB colour as a spectrum (`RgbAlbedo::new`,
+//!   `RgbUnbounded::new`, `RgbIlluminant::new`), fitted in CIELAB.
 //!
 //! [`Xyz`] and [`LinearSrgb`] have the whole component-wise operator set
 //! (`+ - * /` with each other and with scalars on either side, the assign
@@ -27,9 +30,11 @@
 
 pub mod adaptation;
 pub mod display;
+pub mod lab;
 pub mod matrix;
 pub mod srgb;
 pub(crate) mod triple;
+pub mod upsample;
 mod xyz;
 
 pub use display::{Display, EncodedSrgb, Exposure, GamutMap, Srgb8};

@@ -34,7 +34,7 @@ use crate::spectrum::data::{
     CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,
     CIE_Z_COEFFS, CIE_Z_LAMBDA,
 };
-use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, Role, TabulatedSpectrum, interp};
+use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, Role, Spectrum, integrate, interp};
 
 /// The most buckets the study uses, and [`Buckets`] accepts.
 pub const MAX_BUCKETS: usize = 64;
@@ -95,7 +95,7 @@ impl BucketRule {
     }
 
     /// The `out.len()` bucket values of `s` under this rule.
-    pub fn values_into(self, s: &TabulatedSpectrum, out: &mut [f64]) {
+    pub fn values_into<S: Spectrum + ?Sized>(self, s: &S, out: &mut [f64]) {
         let m = out.len();
         match self {
             BucketRule::Center => {
@@ -108,16 +108,23 @@ impl BucketRule {
     }
 }
 
-/// Differences of the exact cumulative integral at the `m + 1` edges,
-/// over the bucket width: O(1) per edge from the integrals stored with the
-/// spectrum.
+/// The exact means of `s` over each of `out.len()` buckets: for a table,
+/// differences of its exact cumulative integral at the edges (O(1) per edge
+/// from the integrals stored with it); otherwise each bucket's integral
+/// (exact for a piecewise polynomial, else by quadrature).
 #[inline]
-pub(crate) fn box_means(s: &TabulatedSpectrum, out: &mut [f64]) {
+pub(crate) fn box_means<S: Spectrum + ?Sized>(s: &S, out: &mut [f64]) {
     let m = out.len();
     let inv_width = m as f64 / LAMBDA_WIDTH;
-    let mut below = s.cumulative(edge(0, m));
+    let Some(table) = s.as_tabulated() else {
+        for (i, v) in out.iter_mut().enumerate() {
+            *v = integrate::integral(&s, edge(i, m), edge(i + 1, m)) * inv_width;
+        }
+        return;
+    };
+    let mut below = table.cumulative(edge(0, m));
     for (i, v) in out.iter_mut().enumerate() {
-        let above = s.cumulative(edge(i + 1, m));
+        let above = table.cumulative(edge(i + 1, m));
         *v = (above - below) * inv_width;
         below = above;
     }
@@ -167,7 +174,7 @@ impl Buckets {
 
     /// The M bucket values of `s`.
     #[must_use]
-    pub fn values(&self, s: &TabulatedSpectrum) -> Vec<f64> {
+    pub fn values(&self, s: &(impl Spectrum + ?Sized)) -> Vec<f64> {
         let mut out = vec![0.0; self.m()];
         self.rule.values_into(s, &mut out);
         out
@@ -203,7 +210,7 @@ impl Buckets {
 
     /// XYZ of `light × surface` bucketed by this rule.
     #[must_use]
-    pub fn xyz(&self, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Xyz {
+    pub fn xyz(&self, light: &(impl Spectrum + ?Sized), surface: &(impl Spectrum + ?Sized)) -> Xyz {
         self.xyz_of_product(&[&self.values(light), &self.values(surface)])
     }
 }

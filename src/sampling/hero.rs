@@ -40,7 +40,8 @@ use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::pdf::{Uniform, WavelengthPdf};
 use crate::sampling::strata::Strata;
-use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, TabulatedSpectrum, Wavelengths, observer};
+use crate::spectrum::observer::{self, Cie1931, Observer};
+use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, Spectrum, Wavelengths};
 
 /// K wavelengths drawn together (a hero and K − 1 companions), each with
 /// the probability density it was drawn with. The sample keeps each pdf's
@@ -155,14 +156,29 @@ impl<const K: usize> HeroSample<K> {
         self.inv_pdf[1..].iter().all(|&w| w == 0.0)
     }
 
+    /// `s` at the sample's wavelengths (what `s.sample(&self)` gives).
+    #[inline(always)]
+    #[must_use]
+    pub fn sample(&self, s: &impl Spectrum) -> SampledSpectrum<K> {
+        s.sample(self)
+    }
+
     /// The sample's XYZ estimate of a spectrum with values `v`:
-    /// `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)`. Each wavelength's term is formed on its own
-    /// and the K terms are summed at the end, so the work has no chain
-    /// through the sample.
+    /// `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)`, with the exact observer. Each wavelength's
+    /// term is formed on its own and the K terms are summed at the end, so
+    /// the work has no chain through the sample.
     #[inline(always)]
     #[must_use]
     pub fn to_xyz(&self, v: SampledSpectrum<K>) -> Xyz {
-        let cmf = observer::xyz_bar_lanes(&self.lambda);
+        self.to_xyz_with(&Cie1931, v)
+    }
+
+    /// [`HeroSample::to_xyz`] with the matching functions of `observer`
+    /// (the exact [`Cie1931`], or a dense table: `DenseObserver`).
+    #[inline(always)]
+    #[must_use]
+    pub fn to_xyz_with(&self, observer: &impl Observer, v: SampledSpectrum<K>) -> Xyz {
+        let cmf = observer.xyz_bar_lanes(&self.lambda);
         let mut sum = Xyz::ZERO;
         for ((c, v), w) in cmf.iter().zip(v.values).zip(self.inv_pdf) {
             sum += Xyz::from(*c) * (v * w);
@@ -225,8 +241,8 @@ impl<const K: usize> Wavelengths<K> for HeroSample<K> {
 /// samples does not exist.
 #[must_use]
 pub fn estimate<const K: usize, R: Rng + ?Sized>(
-    light: &TabulatedSpectrum,
-    surface: &TabulatedSpectrum,
+    light: &impl Spectrum,
+    surface: &impl Spectrum,
     n: NonZeroUsize,
     rng: &mut R,
 ) -> Xyz {
@@ -238,8 +254,8 @@ pub fn estimate<const K: usize, R: Rng + ?Sized>(
 /// `light × surface` is, and every strata.
 #[must_use]
 pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
-    light: &TabulatedSpectrum,
-    surface: &TabulatedSpectrum,
+    light: &impl Spectrum,
+    surface: &impl Spectrum,
     n: NonZeroUsize,
     pdf: &P,
     strata: Strata,
@@ -269,8 +285,8 @@ macro_rules! hero_widths {
         /// dispatches to `HeroSample<K>` for K in [`WIDTHS`], an error otherwise.
         pub fn estimate_dyn<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
             k: usize,
-            light: &TabulatedSpectrum,
-            surface: &TabulatedSpectrum,
+            light: &impl Spectrum,
+            surface: &impl Spectrum,
             n: NonZeroUsize,
             pdf: &P,
             strata: Strata,

@@ -27,7 +27,7 @@ use std::sync::Arc;
 use crate::color::Xyz;
 use crate::error::{Error, Field, Invalid, SampleError};
 use crate::spectrum::weights::{self, Weights};
-use crate::spectrum::{Interpolation, Role, TabulatedSpectrum, interp};
+use crate::spectrum::{Interpolation, Role, Spectrum, TabulatedSpectrum, interp};
 use crate::spectrum::{integrate, validate};
 
 /// A light with its exact weights for reflectances on one grid.
@@ -85,7 +85,7 @@ impl<'a> PreparedLight<'a> {
     #[must_use]
     pub fn xyz(&self, surface: &TabulatedSpectrum) -> Xyz {
         if !self.fits(surface) {
-            return Xyz::from(integrate::xyz_of_product(&[self.light, surface]));
+            return Xyz::from(integrate::xyz_of_product(&[self.light as &dyn Spectrum, surface]));
         }
         let r = surface.values();
         let mut sum = dot(self.weights.samples(), r);

@@ -48,7 +48,7 @@ use std::marker::PhantomData;
 use crate::color::Xyz;
 use crate::sampling::buckets::{BucketRule, box_means, center, dot4};
 use crate::spectrum::pointwise::pointwise_spectrum;
-use crate::spectrum::{LAMBDA_WIDTH, TabulatedSpectrum};
+use crate::spectrum::{LAMBDA_WIDTH, Spectrum};
 
 /// A bucket rule as a type, so that values bucketed by different rules
 /// cannot be mixed.
@@ -59,7 +59,7 @@ pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
     /// time: x̄ᵢ, ȳᵢ and z̄ᵢ as three rows (one dot product each).
     const OBSERVER: [[f64; M]; 3] = observer_rows::<M>(Self::RULE);
     /// The `M` bucket values of `s`.
-    fn buckets(s: &TabulatedSpectrum) -> [f64; M];
+    fn buckets<S: Spectrum + ?Sized>(s: &S) -> [f64; M];
 }
 
 /// Point samples at bucket centers ([`BucketRule::Center`]).
@@ -74,15 +74,17 @@ impl<const M: usize> Bucketing<M> for Center {
     const RULE: BucketRule = BucketRule::Center;
     /// The spectrum at the `M` centers, evaluated side by side.
     #[inline]
-    fn buckets(s: &TabulatedSpectrum) -> [f64; M] {
-        s.sample(&const { centers::<M>() }).values
+    fn buckets<S: Spectrum + ?Sized>(s: &S) -> [f64; M] {
+        let mut out = [0.0; M];
+        s.eval_many(&const { centers::<M>() }, &mut out);
+        out
     }
 }
 
 impl<const M: usize> Bucketing<M> for BoxAverage {
     const RULE: BucketRule = BucketRule::BoxAverage;
     #[inline]
-    fn buckets(s: &TabulatedSpectrum) -> [f64; M] {
+    fn buckets<S: Spectrum + ?Sized>(s: &S) -> [f64; M] {
         let mut out = [0.0; M];
         box_means(s, &mut out);
         out
@@ -128,7 +130,7 @@ impl<const M: usize, B: Bucketing<M>> RegularSpectrum<M, B> {
     /// Buckets `s` by the rule `B`.
     #[inline]
     #[must_use]
-    pub fn from_spectrum(s: &TabulatedSpectrum) -> Self {
+    pub fn from_spectrum(s: &impl Spectrum) -> Self {
         Self::from_values(B::buckets(s))
     }
 
@@ -167,7 +169,7 @@ impl<const M: usize, B: Bucketing<M>> RegularSpectrum<M, B> {
 impl<const M: usize> RegularSpectrum<M, Center> {
     /// Point samples of `s` at the bucket centers.
     #[must_use]
-    pub fn center(s: &TabulatedSpectrum) -> Self {
+    pub fn center(s: &impl Spectrum) -> Self {
         Self::from_spectrum(s)
     }
 }
@@ -175,7 +177,7 @@ impl<const M: usize> RegularSpectrum<M, Center> {
 impl<const M: usize> RegularSpectrum<M, BoxAverage> {
     /// Exact means of `s` over each bucket.
     #[must_use]
-    pub fn box_average(s: &TabulatedSpectrum) -> Self {
+    pub fn box_average(s: &impl Spectrum) -> Self {
         Self::from_spectrum(s)
     }
 }

@@ -1,8 +1,17 @@
 //! Continuous spectra, the bottom floor: samples plus an interpolant,
 //! evaluated at any wavelength in nanometres, and integrated exactly.
 //!
-//! - [`TabulatedSpectrum`]: a light, a reflectance or a matching function.
-//!   Its [`Role`] picks the [`Interpolation`] and the value bounds.
+//! - [`Spectrum`]: what every spectrum answers (a value at any wavelength,
+//!   values at K wavelengths, its polynomial pieces if it has them); one
+//!   interface over the kinds below and a renderer's own.
+//! - [`TabulatedSpectrum`]: a light, a reflectance or a matching function
+//!   from samples. Its [`Role`] picks the [`Interpolation`] and the value
+//!   bounds. The reference: exact, and the slowest to evaluate.
+//! - [`DenseSpectrum`]: any spectrum resampled every nanometre, one lookup
+//!   per wavelength; [`DenseObserver`], the observer so.
+//! - [`Constant`], [`Blackbody`], [`FnSpectrum`] (a closure).
+//! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`]: spectra of RGB
+//!   colours (sigmoid polynomials); fitted by `color::upsample`.
 //! - [`SampledSpectrum`]: a spectrum's values at K wavelengths (any
 //!   [`Wavelengths`]), with point-wise arithmetic.
 //! - [`validate`]: what makes samples a spectrum (shared with build
@@ -23,7 +32,10 @@
 //! assert!(v > 0.0);
 //! ```
 
+mod analytic;
 pub mod data;
+mod dense;
+mod generic;
 pub(crate) mod integrate;
 pub(crate) mod lookup;
 pub mod observer;
@@ -31,6 +43,7 @@ pub(crate) mod piecewise;
 pub(crate) mod pointwise;
 pub(crate) mod quadrature;
 mod sampled;
+mod sigmoid;
 mod tabulated;
 pub(crate) mod weights;
 
@@ -38,6 +51,11 @@ pub(crate) use speclab_tables::interp;
 pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
 pub use speclab_tables::validate;
 
+pub use analytic::{Blackbody, Constant, FnSpectrum};
+pub use dense::{DenseObserver, DenseSpectrum, MIN_STEP};
+pub use generic::{Pieces, Spectrum};
+pub use observer::{Cie1931, Observer};
 pub use sampled::{SampledSpectrum, Wavelengths};
+pub use sigmoid::{RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial, sigmoid};
 pub use tabulated::{Tables, TabulatedSpectrum};
 pub use validate::{Interpolation, Role};

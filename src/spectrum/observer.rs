@@ -69,6 +69,26 @@ const fn rows() -> [[f64; 12]; SEGMENTS] {
     out
 }
 
+/// Colour matching functions x̄, ȳ, z̄ at K wavelengths at once: the exact
+/// interpolated CIE 1931 observer, [`Cie1931`], or a dense table
+/// (`DenseObserver`). `HeroSample::to_xyz_with` converts with either.
+pub trait Observer {
+    /// `[x̄, ȳ, z̄]` at each wavelength, nm.
+    fn xyz_bar_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [[f64; 3]; K];
+}
+
+/// The CIE 1931 2° observer of Appendix 1, interpolated by the clamped
+/// cubic: the exact one.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Cie1931;
+
+impl Observer for Cie1931 {
+    #[inline(always)]
+    fn xyz_bar_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [[f64; 3]; K] {
+        xyz_bar_lanes(lambda)
+    }
+}
+
 /// `[x̄, ȳ, z̄]` at `lambda` nm; zero outside 380–780 nm.
 ///
 /// The three tables share one wavelength grid (checked in the tests), so the

@@ -28,6 +28,7 @@ use std::fmt;
 use std::sync::{Arc, OnceLock};
 
 use crate::error::Error;
+use crate::spectrum::generic::{Pieces, Spectrum};
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::piecewise::View;
@@ -82,8 +83,9 @@ pub struct TabulatedSpectrum {
     lookup: Option<UniformLookup>,
     /// The role's clamp interval.
     bounds: [f64; 2],
-    /// As a light: its exact reference weights, computed on first use.
-    weights: OnceLock<Arc<Weights>>,
+    /// As a light: its exact reference weights, computed on first use
+    /// (`weights.rs`).
+    pub(super) weights: OnceLock<Arc<Weights>>,
 }
 
 impl PartialEq for TabulatedSpectrum {
@@ -217,14 +219,22 @@ impl TabulatedSpectrum {
     /// [`TabulatedSpectrum::eval`] at K wavelengths at once.
     #[inline(always)]
     pub(crate) fn eval_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [f64; K] {
+        let mut v = [0.0; K];
+        self.eval_into(lambda, &mut v);
+        v
+    }
+
+    /// [`TabulatedSpectrum::eval`] at each of `lambda`, side by side, into
+    /// `values` (as many as the shorter has).
+    #[inline(always)]
+    fn eval_into(&self, lambda: &[f64], values: &mut [f64]) {
         let Some(lookup) = self.lookup else {
-            return self.eval_lanes_by_search(lambda);
+            return self.eval_by_search(lambda, values);
         };
         let (coeffs, knots) = (&*self.coeffs, &*self.lambda);
         let ([first, last], [lo, hi]) = (self.ends, self.bounds);
         let linear = self.interpolation == Interpolation::Linear;
-        let mut v = [0.0; K];
-        for (v, &l) in v.iter_mut().zip(lambda) {
+        for (v, &l) in values.iter_mut().zip(lambda) {
             let k = lookup.segment(l);
             // SAFETY: k < lookup.segments() == coeffs.len() < knots.len(), by
             // the invariant of `lookup` (see the field).
@@ -238,15 +248,16 @@ impl TabulatedSpectrum {
             // exact sign; NaN compares false).
             *v = if (l - first) * (last - l) >= 0.0 { p } else { 0.0 };
         }
-        v
     }
 
-    /// [`TabulatedSpectrum::eval_lanes`] for a table that is not
-    /// equidistant: a binary search per lane.
+    /// [`TabulatedSpectrum::eval_into`] for a table that is not
+    /// equidistant: a binary search per wavelength.
     #[cold]
     #[inline(never)]
-    fn eval_lanes_by_search<const K: usize>(&self, lambda: &[f64; K]) -> [f64; K] {
-        lambda.map(|l| interp::eval(&self.lambda, &self.coeffs, self.bounds, l))
+    fn eval_by_search(&self, lambda: &[f64], values: &mut [f64]) {
+        for (v, &l) in values.iter_mut().zip(lambda) {
+            *v = interp::eval(&self.lambda, &self.coeffs, self.bounds, l);
+        }
     }
 
     /// The spectrum times `factor` (finite and positive, and keeping every
@@ -328,29 +339,6 @@ impl TabulatedSpectrum {
         self.interpolation
     }
 
-    /// As a light: its exact reference weights for reflectances on `grid`
-    /// interpolated by `interpolation`, computed on first use and kept for
-    /// the first grid asked for; other grids get weights of their own.
-    pub(crate) fn weights(&self, grid: &[f64], interpolation: Interpolation) -> Arc<Weights> {
-        let compute = || Arc::new(Weights::compute(&self.view(), grid, interpolation));
-        let kept = self.weights.get_or_init(compute);
-        if kept.grid() == grid && kept.interpolation() == interpolation {
-            Arc::clone(kept)
-        } else {
-            compute()
-        }
-    }
-
-    /// The weights kept by [`TabulatedSpectrum::weights`], if they are for
-    /// reflectances like `surface` (its grid and interpolation).
-    pub(crate) fn weights_for(&self, surface: &TabulatedSpectrum) -> Option<&Weights> {
-        let kept = self.weights.get_or_init(|| {
-            Arc::new(Weights::compute(&self.view(), surface.lambda(), surface.interpolation()))
-        });
-        let fits = kept.grid() == surface.lambda() && kept.interpolation() == surface.interpolation();
-        fits.then_some(kept)
-    }
-
     /// The degree of the polynomial pieces: 1 (linear) or 3 (cubic).
     pub(crate) fn degree(&self) -> usize {
         match self.interpolation {
@@ -384,6 +372,28 @@ impl TabulatedSpectrum {
     #[must_use]
     pub fn breaks(&self) -> &[f64] {
         &self.breaks
+    }
+}
+
+
+impl Spectrum for TabulatedSpectrum {
+    #[inline(always)]
+    fn eval(&self, lambda: f64) -> f64 {
+        TabulatedSpectrum::eval(self, lambda)
+    }
+
+    #[inline(always)]
+    fn eval_many(&self, lambda: &[f64], values: &mut [f64]) {
+        self.eval_into(lambda, values);
+    }
+
+    /// The samples and the clamp crossings; linear (degree 1) or cubic (3).
+    fn pieces(&self) -> Option<Pieces<'_>> {
+        Some(Pieces { breaks: Cow::Borrowed(&self.breaks), degree: self.degree() })
+    }
+
+    fn as_tabulated(&self) -> Option<&TabulatedSpectrum> {
+        Some(self)
     }
 }
 

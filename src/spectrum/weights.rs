@@ -26,12 +26,40 @@
 //! A light computes its weights once, on first use, and keeps them
 //! (`TabulatedSpectrum::weights`); `sampling::PreparedLight` applies them.
 
+use std::sync::Arc;
+
 use crate::spectrum::interp::{self, Coeffs};
+use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::observer;
 use crate::spectrum::piecewise::{View, pieces_into};
 use crate::spectrum::quadrature::{gauss, integrate};
 use crate::spectrum::validate::Interpolation;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+
+impl TabulatedSpectrum {
+    /// As a light: its exact reference weights for reflectances on `grid`
+    /// interpolated by `interpolation`, computed on first use and kept for
+    /// the first grid asked for; other grids get weights of their own.
+    pub(crate) fn weights(&self, grid: &[f64], interpolation: Interpolation) -> Arc<Weights> {
+        let compute = || Arc::new(Weights::compute(&self.view(), grid, interpolation));
+        let kept = self.weights.get_or_init(compute);
+        if kept.grid() == grid && kept.interpolation() == interpolation {
+            Arc::clone(kept)
+        } else {
+            compute()
+        }
+    }
+
+    /// The weights kept by [`TabulatedSpectrum::weights`], if they are for
+    /// reflectances like `surface` (its grid and interpolation).
+    pub(crate) fn weights_for(&self, surface: &TabulatedSpectrum) -> Option<&Weights> {
+        let kept = self.weights.get_or_init(|| {
+            Arc::new(Weights::compute(&self.view(), surface.lambda(), surface.interpolation()))
+        });
+        let fits = kept.grid() == surface.lambda() && kept.interpolation() == surface.interpolation();
+        fits.then_some(kept)
+    }
+}
 
 /// Exact weights of one light for reflectances on one grid.
 #[derive(Clone, Debug, PartialEq)]

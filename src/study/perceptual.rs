@@ -20,28 +20,7 @@ use palette::white_point::D65;
 
 use crate::color::Xyz;
 
-/// The largest ratio of a tristimulus value to the white's, `X/Xn`, that
-/// [`lab`] uses. A colour a million times brighter than the white (L* ≈
-/// 11,600) is off any perceptual scale already; the cap keeps CIEDE2000,
-/// which raises chroma to the 7th power, finite where a white component is
-/// nearly zero (a light with almost no power where z̄ lives) and an estimate
-/// puts energy there.
-pub const MAX_RATIO: f64 = 1e6;
-
-/// CIELAB `[L*, a*, b*]` of `xyz` relative to the white `white`. A white
-/// component that is not positive (a light with no power where that matching
-/// function lives) makes its ratio 0: under a dark light everything is
-/// black. Ratios are limited to ±[`MAX_RATIO`].
-#[must_use]
-pub fn lab(xyz: Xyz, white: Xyz) -> [f64; 3] {
-    let f = |t: f64| {
-        const DELTA: f64 = 6.0 / 29.0;
-        if t > DELTA * DELTA * DELTA { t.cbrt() } else { t / (3.0 * DELTA * DELTA) + 4.0 / 29.0 }
-    };
-    let ratio = |c: f64, w: f64| if w > 0.0 { (c / w).clamp(-MAX_RATIO, MAX_RATIO) } else { 0.0 };
-    let (fx, fy, fz) = (f(ratio(xyz.x, white.x)), f(ratio(xyz.y, white.y)), f(ratio(xyz.z, white.z)));
-    [116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)]
-}
+pub use crate::color::lab::{MAX_RATIO, lab};
 
 /// CIEDE2000 between two L\*a\*b\* colours.
 #[must_use]

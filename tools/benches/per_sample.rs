@@ -67,7 +67,7 @@ fn path_tracer_ops(c: &mut Criterion) {
     let mut group = c.benchmark_group("path tracer ops, K=4");
     let h = HeroSample::<4>::new(0.3);
     let (le, albedo) = (data::lights::F11.sample(&h), data::patches::H4.sample(&h));
-    group.bench_function("HeroSample::with_pdf", |b| {
+    group.bench_function("HeroSample::from_wavelengths", |b| {
         b.iter(|| HeroSample::from_wavelengths(black_box(*h.lambda()), black_box(h.pdf())))
     });
     group.bench_function("terminate_secondary", |b| {

@@ -1,0 +1,151 @@
+//! Spectra given by a formula: [`Constant`], [`Blackbody`] (Planck's law),
+//! and [`FnSpectrum`], a renderer's own function of the wavelength.
+//!
+//! A constant is a polynomial (exact integrals); a blackbody and a closure
+//! are integrated by quadrature (see [`super::Spectrum`]).
+//!
+//! ```
+//! use speclab::Spectrum;
+//! use speclab::spectrum::{Blackbody, Constant, FnSpectrum};
+//! let tungsten = Blackbody::new(2856.0)?; // about illuminant A
+//! assert!((tungsten.eval(1014.6) - 1.0).abs() < 1e-6); // normalised to its peak (Wien)
+//! assert!(tungsten.eval(700.0) > tungsten.eval(400.0));
+//! assert_eq!(Constant::new(0.5).eval(555.0), 0.5);
+//! let ramp = FnSpectrum(|lambda: f64| lambda / 1000.0);
+//! assert_eq!(ramp.eval(500.0), 0.5);
+//! assert!(Blackbody::new(-1.0).is_err());
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::borrow::Cow;
+
+use crate::error::Error;
+use crate::spectrum::generic::{Pieces, Spectrum};
+
+/// The same value at every wavelength.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Constant {
+    value: f64,
+}
+
+impl Constant {
+    /// `value` everywhere (NaN or infinite values are kept as given).
+    #[must_use]
+    pub const fn new(value: f64) -> Self {
+        Constant { value }
+    }
+
+    /// The value.
+    #[must_use]
+    pub const fn value(&self) -> f64 {
+        self.value
+    }
+}
+
+impl Spectrum for Constant {
+    #[inline]
+    fn eval(&self, _lambda: f64) -> f64 {
+        self.value
+    }
+
+    #[inline]
+    fn eval_many(&self, _lambda: &[f64], values: &mut [f64]) {
+        values.fill(self.value);
+    }
+
+    /// One polynomial of degree 0 everywhere.
+    fn pieces(&self) -> Option<Pieces<'_>> {
+        Some(Pieces { breaks: Cow::Borrowed(&[]), degree: 0 })
+    }
+}
+
+/// A blackbody's spectral radiance by Planck's law, at a temperature in
+/// kelvin, normalised so that its peak (at Wien's `λ = b/T`) is 1, as
+/// pbrt-v4's `BlackbodySpectrum`. Zero at wavelengths that are not positive.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Blackbody {
+    kelvin: f64,
+    /// `1 / B(λ_peak, T)`.
+    normalization: f64,
+}
+
+/// Planck's constant, J·s (CODATA 2018, exact).
+const PLANCK: f64 = 6.626_070_15e-34;
+/// The speed of light, m/s (exact).
+const LIGHT: f64 = 299_792_458.0;
+/// Boltzmann's constant, J/K (CODATA 2018, exact).
+const BOLTZMANN: f64 = 1.380_649e-23;
+/// Wien's displacement constant, m·K (CODATA 2018).
+const WIEN: f64 = 2.897_771_955e-3;
+
+/// Planck's law: spectral radiance at `lambda` nm and `kelvin`, W/(sr·m³).
+fn planck(lambda: f64, kelvin: f64) -> f64 {
+    if lambda <= 0.0 {
+        return 0.0;
+    }
+    let l = lambda * 1e-9;
+    let l5 = l * l * l * l * l;
+    2.0 * PLANCK * LIGHT * LIGHT / (l5 * ((PLANCK * LIGHT / (l * BOLTZMANN * kelvin)).exp_m1()))
+}
+
+impl Blackbody {
+    /// The blackbody at `kelvin`; an error unless it is finite and
+    /// positive.
+    pub fn new(kelvin: f64) -> Result<Self, Error> {
+        let normalization = 1.0 / planck(WIEN / kelvin * 1e9, kelvin);
+        if !(kelvin.is_finite() && kelvin > 0.0 && normalization.is_finite() && normalization > 0.0) {
+            return Err(Error::Temperature { kelvin });
+        }
+        Ok(Blackbody { kelvin, normalization })
+    }
+
+    /// The temperature, K.
+    #[must_use]
+    pub fn kelvin(&self) -> f64 {
+        self.kelvin
+    }
+}
+
+impl Spectrum for Blackbody {
+    #[inline]
+    fn eval(&self, lambda: f64) -> f64 {
+        planck(lambda, self.kelvin) * self.normalization
+    }
+}
+
+/// A renderer's own spectrum: a function of the wavelength in nm. Integrated
+/// by quadrature, so a function with kinks or jumps inside the observer's
+/// 5 nm pieces integrates less accurately than a smooth one.
+#[derive(Clone, Copy, Debug)]
+pub struct FnSpectrum<F>(pub F);
+
+impl<F: Fn(f64) -> f64> Spectrum for FnSpectrum<F> {
+    #[inline]
+    fn eval(&self, lambda: f64) -> f64 {
+        (self.0)(lambda)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Planck's law against a published value: at 5000 K and 500 nm the
+    /// spectral radiance is 1.2107e13 W/(sr·m³) (CIE 15's constants give
+    /// the same to 4 digits); the peak is where Wien puts it.
+    #[test]
+    fn planck_and_its_peak() {
+        let b = planck(500.0, 5000.0);
+        assert!((b / 1.2107e13 - 1.0).abs() < 1e-3, "{b:e}");
+        let sun = Blackbody::new(5000.0).unwrap();
+        let peak = WIEN / 5000.0 * 1e9;
+        assert!((sun.eval(peak) - 1.0).abs() < 1e-12);
+        assert!(sun.eval(peak - 1.0) < 1.0 && sun.eval(peak + 1.0) < 1.0);
+        assert_eq!(sun.eval(0.0), 0.0);
+        assert_eq!(sun.eval(-5.0), 0.0);
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e-300] {
+            assert!(matches!(Blackbody::new(bad), Err(Error::Temperature { .. })), "{bad}");
+        }
+        assert_eq!(Blackbody::new(6500.0).unwrap().kelvin(), 6500.0);
+    }
+}
