@@ -20,9 +20,10 @@ use speclab::study::grid::GridOptions;
 use speclab::study::remarks::Viewing;
 use speclab::study::report;
 use speclab::study::scene::{Choice, Named};
+use speclab::study::texture::{self, TextureOptions};
 
 const USAGE: &str = "\
-usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-file PATH]
+usage: grid [--n N] [--m M] [--seed S] [--csv] [--texture] [--light-file PATH] [--surface-file PATH]
             [--normalize none|power|luminance] [--white-balance]
             [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
             [--gamut clip|chroma]
@@ -30,6 +31,9 @@ usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-fi
   --m M                buckets for regular sampling, 1 to 64 (default 16)
   --seed S             base seed of the random methods (default 1)
   --csv                print light,surface,method,samples,x,y,z,r,g,b,pdf,strata,evals rows
+  --texture            instead, what an RGB texture of each surface costs in colour under each
+                       light (its colour under D65, upsampled), beside hero (n, jittered) and
+                       buckets (M): a Markdown table
   --light-file PATH    use this light instead of A, D65, F11 (brace, CSV/TSV or JSON)
   --surface-file PATH  use this reflectance instead of the six patches
   --normalize MODE     scale each light first: none (default, as Appendix 2),
@@ -43,6 +47,7 @@ usage: grid [--n N] [--m M] [--seed S] [--csv] [--light-file PATH] [--surface-fi
 struct Args {
     grid: GridOptions,
     csv: bool,
+    texture: bool,
     lights: Vec<Choice>,
     surfaces: Vec<Choice>,
     viewing: Viewing,
@@ -55,6 +60,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut args = Args {
         grid: GridOptions::default(),
         csv: false,
+        texture: false,
         lights: names(&["A", "D65", "F11"]),
         surfaces: names(&["E2", "F4", "G4", "H4", "J4", "A1"]),
         viewing: Viewing::default(),
@@ -67,6 +73,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("m") => args.grid.m = parser.value()?.parse_with(common::buckets)?,
             Long("seed") => args.grid.seed = parser.value()?.parse()?,
             Long("csv") => args.csv = true,
+            Long("texture") => args.texture = true,
             Long("light-file") => args.lights = vec![Choice::File(parser.value()?.into())],
             Long("surface-file") => args.surfaces = vec![Choice::File(parser.value()?.into())],
             Long("normalize") => args.viewing.normalize = parser.value()?.parse()?,
@@ -104,6 +111,14 @@ fn main() -> ExitCode {
         Ok(scene) => scene,
         Err(e) => return fail("grid", e),
     };
+    if args.texture {
+        let (n, m, seed) = (args.grid.n.get(), args.grid.m.get(), args.grid.seed);
+        let options = TextureOptions { n, m, seed, ..TextureOptions::default() };
+        return match texture::rows(&lights, &surfaces, &options) {
+            Ok(rows) => finish("grid", report::texture_table(&mut io::stdout().lock(), &rows, &options)),
+            Err(e) => fail("grid", e),
+        };
+    }
     let rows = match args.grid.rows(&lights, &surfaces) {
         Ok(rows) => rows,
         Err(e) => return fail("grid", e),

@@ -63,5 +63,6 @@ pub use error::Error;
 pub use rand;
 pub use sampling::{BoxAverage, Center, HeroSample, RegularSpectrum};
 pub use spectrum::{
-    Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Role, SampledSpectrum, Spectrum, TabulatedSpectrum, data,
+    Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Role, SampledSpectrum, Spectrum, TabulatedSpectrum,
+    data,
 };

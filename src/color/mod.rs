@@ -32,6 +32,7 @@ pub mod adaptation;
 pub mod display;
 pub mod lab;
 pub mod matrix;
+pub mod rgb_table;
 pub mod srgb;
 pub(crate) mod triple;
 pub mod upsample;

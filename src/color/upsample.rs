@@ -48,8 +48,8 @@ use crate::error::Error;
 use crate::spectrum::data::lights;
 use crate::spectrum::observer::{self, Y_BAR_INTEGRAL};
 use crate::spectrum::{
-    LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial, Spectrum,
-    TabulatedSpectrum, integrate, quadrature,
+    LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial,
+    Spectrum, TabulatedSpectrum, integrate, quadrature,
 };
 
 /// An RGB colour space for upsampling: its illuminant, its white, the
@@ -83,7 +83,8 @@ impl RgbSpace {
         let to_rgb = [0, 1, 2].map(|r| xyz_to_rgb[r].map(|v| v / balance[r]));
         let mut pieces: Vec<f64> = illuminant.breaks().to_vec();
         pieces.extend(observer::CMFS.iter().flat_map(|s| s.breaks().iter().copied()));
-        let pieces = quadrature::pieces(pieces.into_iter().filter(|&x| (LAMBDA_MIN..=LAMBDA_MAX).contains(&x)));
+        let pieces =
+            quadrature::pieces(pieces.into_iter().filter(|&x| (LAMBDA_MIN..=LAMBDA_MAX).contains(&x)));
         let rule = quadrature::gauss(4);
         let nodes = pieces
             .windows(2)
@@ -191,11 +192,8 @@ impl RgbSpace {
     /// grey of the colour's luminance, and, where that stalls, along the
     /// line from that grey in more and more steps.
     pub(crate) fn fit(&self, rgb: [f64; 3]) -> SigmoidPolynomial {
-        if rgb == [0.0; 3] {
-            return SigmoidPolynomial::BLACK;
-        }
-        if rgb == [1.0; 3] {
-            return SigmoidPolynomial::WHITE;
+        if rgb[0] == rgb[1] && rgb[1] == rgb[2] {
+            return constant(rgb[0]);
         }
         let target = self.xyz(LinearSrgb::from(rgb)).to_array();
         // The flat spectrum of the colour's luminance has the white's colour
@@ -221,6 +219,29 @@ impl RgbSpace {
         SigmoidPolynomial::new(best.0)
     }
 
+    /// [`RgbSpace::fit`], starting from `start` if given (a neighbour's
+    /// coefficients, for tables): the full fit only where that falls short.
+    pub(crate) fn fit_from(&self, rgb: [f64; 3], start: Option<[f64; 3]>) -> SigmoidPolynomial {
+        if rgb == [0.0; 3] {
+            // Finite, for interpolating tables: 2.5e-9 everywhere.
+            return SigmoidPolynomial::new([0.0, 0.0, -1e4]);
+        }
+        if let Some(start) = start.filter(|s| s.iter().all(|v| v.is_finite())) {
+            let target = self.xyz(LinearSrgb::from(rgb)).to_array();
+            let (c, error) = self.descend(target, start, 40);
+            if error < TOLERANCE {
+                return SigmoidPolynomial::new(c);
+            }
+        }
+        let fitted = self.fit(rgb);
+        let c = fitted.coefficients();
+        if c.iter().all(|v| v.is_finite()) {
+            fitted
+        } else {
+            SigmoidPolynomial::new([0.0, 0.0, c[2].clamp(-1e4, 1e4)])
+        }
+    }
+
     /// `rgb` (negatives and NaN as 0) as `(scale, albedo)`: twice its largest
     /// component and the sigmoid polynomial of the colour over that.
     pub(crate) fn split(&self, rgb: LinearSrgb) -> (f64, SigmoidPolynomial) {
@@ -240,6 +261,15 @@ const TOLERANCE: f64 = 1e-7;
 /// `a · b`.
 fn product(a: &Matrix, b: &Matrix) -> Matrix {
     std::array::from_fn(|r| std::array::from_fn(|c| (0..3).map(|k| a[r][k] * b[k][c]).sum()))
+}
+
+/// The constant `v` in [0, 1] as a sigmoid polynomial: 0 and 1 exactly.
+pub(crate) fn constant(v: f64) -> SigmoidPolynomial {
+    match v {
+        0.0 => SigmoidPolynomial::BLACK,
+        1.0 => SigmoidPolynomial::WHITE,
+        v => SigmoidPolynomial::new([0.0, 0.0, inverse_sigmoid(v)]),
+    }
 }
 
 /// The x with `½ + x/(2√(1 + x²)) = s`, for s in (0, 1).

@@ -33,6 +33,33 @@
 //! assert_eq!(values[1].values, [0.5; 4]);
 //! assert_eq!(values[2].values[0], mixed[2].eval(h.lambda()[0]));
 //! ```
+//!
+//! A renderer's own spectrum and an RGB texture's albedo go through every
+//! path unchanged: a hero sample, the exact reference, buckets and the
+//! Monte Carlo estimate.
+//!
+//! ```
+//! use std::num::NonZeroUsize;
+//! use rand::{SeedableRng, rngs::StdRng};
+//! use speclab::{data::lights, HeroSample, LinearSrgb, RegularSpectrum};
+//! use speclab::sampling::{hero, reference};
+//! use speclab::spectrum::{FnSpectrum, RgbAlbedo};
+//! let paint = FnSpectrum(|l: f64| 0.2 + 0.6 / (1.0 + ((600.0 - l) / 20.0).exp())); // reddish
+//! let texture = RgbAlbedo::new(LinearSrgb::new(0.1, 0.5, 0.2))?; // greenish
+//! for (surface, red) in [(&paint as &dyn speclab::Spectrum, true), (&texture, false)] {
+//!     let h = HeroSample::<4>::new(0.5);
+//!     let one = h.to_xyz(h.sample(&lights::D65) * h.sample(&surface));
+//!     let exact = reference::xyz(&lights::D65, &surface);
+//!     let buckets = (RegularSpectrum::<16>::center(&lights::D65) * RegularSpectrum::center(&surface)).to_xyz();
+//!     let n = NonZeroUsize::new(1000).unwrap();
+//!     let mean = hero::estimate::<4, _>(&lights::D65, &surface, n, &mut StdRng::seed_from_u64(1));
+//!     assert!(one.y > 0.0 && (buckets.y - exact.y).abs() < 0.02 * exact.y);
+//!     assert!((mean.y - exact.y).abs() < 0.02 * exact.y);
+//!     let rgb = exact.to_linear_srgb();
+//!     assert_eq!(rgb.r > rgb.g, red);
+//! }
+//! # Ok::<(), speclab::Error>(())
+//! ```
 
 use std::borrow::Cow;
 

@@ -375,7 +375,6 @@ impl TabulatedSpectrum {
     }
 }
 
-
 impl Spectrum for TabulatedSpectrum {
     #[inline(always)]
     fn eval(&self, lambda: f64) -> f64 {

@@ -29,10 +29,10 @@
 use std::sync::Arc;
 
 use crate::spectrum::interp::{self, Coeffs};
-use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::observer;
 use crate::spectrum::piecewise::{View, pieces_into};
 use crate::spectrum::quadrature::{gauss, integrate};
+use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::validate::Interpolation;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 

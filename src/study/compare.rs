@@ -1,6 +1,7 @@
 //! The assignment's main user story: one light and one surface, the exact
 //! reference beside every technique, with sRGB, ΔE00 of one estimate and,
-//! over many trials, RMS ΔE00.
+//! over many trials, RMS ΔE00; and last, the surface as an RGB texture
+//! would store it (its colour under D65, upsampled), lit by the light.
 //!
 //! ```
 //! use speclab::study::compare::{self, CompareOptions};
@@ -11,7 +12,8 @@
 //! let lines = compare::compare(&light, &patch, &CompareOptions::default())?;
 //! assert_eq!(lines[0].label, "reference");
 //! assert_eq!(lines[0].de00, 0.0);
-//! assert_eq!(lines.len(), 5);
+//! assert_eq!(lines.len(), 6);
+//! assert_eq!(lines[5].label, "rgb texture (D65)");
 //! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
@@ -27,7 +29,7 @@ use crate::study::perceptual;
 use crate::study::remarks::Viewing;
 use crate::study::sampling::Sampling;
 use crate::study::scene::Named;
-use crate::study::trials;
+use crate::study::{texture, trials};
 
 /// What to compare, and how.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -84,7 +86,17 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
     ];
     let white = s.viewing.white(l);
     let exact = s.viewing.adapt(reference::xyz(l, r), l);
-    techniques
+    let (_, albedo, _) = texture::texture(surface)?;
+    let textured = s.viewing.adapt(reference::xyz(l, &albedo), l);
+    let de00 = perceptual::delta_e00(textured, exact, white);
+    let texture_line = Line {
+        label: "rgb texture (D65)".into(),
+        evals: 0,
+        rgb: textured.to_linear_srgb(),
+        de00,
+        rms_de00: de00,
+    };
+    let lines: Result<Vec<Line>, StudyError> = techniques
         .into_iter()
         .map(|(method, count, label)| {
             let prepared = method.prepare(l)?;
@@ -96,5 +108,8 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
             let evals = method.evaluations(count);
             Ok(Line { label, evals, rgb: xyz.to_linear_srgb(), de00, rms_de00: stats.rms_de00 })
         })
-        .collect()
+        .collect();
+    let mut lines = lines?;
+    lines.push(texture_line);
+    Ok(lines)
 }

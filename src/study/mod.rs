@@ -17,6 +17,8 @@
 //! - [`cost`]: the measured cost of one estimate; [`chart`]: speed against
 //!   accuracy and its Pareto front; [`plan`]: the cheapest configuration
 //!   within a scene's ΔE00 budget.
+//! - [`texture`]: what RGB texturing costs in colour under each light,
+//!   beside the sampling errors.
 //! - [`report`]: tables and CSV.
 //! - [`swatches`]: every light × patch by every method as swatches whose
 //!   pixels are independent estimates; [`sheet`] lays them out as a
@@ -51,6 +53,7 @@ pub mod sampling;
 pub mod scene;
 pub mod sheet;
 pub mod swatches;
+pub mod texture;
 pub mod threshold;
 pub mod trials;
 pub mod variance;

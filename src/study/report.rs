@@ -19,8 +19,10 @@ use std::io::{self, Write};
 
 mod chart;
 mod plan;
+mod texture;
 pub use chart::chart_csv;
 pub use plan::plan_text;
+pub use texture::texture_table;
 
 use crate::color::display::{Display, Exposure, GamutMap, Srgb8};
 use crate::color::{LinearSrgb, Xyz};
