@@ -88,12 +88,6 @@ pub enum Error {
         /// The components given.
         rgb: [f64; 3],
     },
-    /// A resampling step that is not finite and positive, or too fine
-    /// (nanometres).
-    Step {
-        /// The step given, nm.
-        step: f64,
-    },
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
         /// What was looked up, e.g. `a built-in light`.
@@ -135,7 +129,6 @@ impl fmt::Display for Error {
                 "expected linear sRGB components in [0, 1], found ({}, {}, {})",
                 rgb[0], rgb[1], rgb[2]
             ),
-            Error::Step { step } => write!(f, "expected a step from 0.01 to 350 nm, found {step}"),
             Error::UnknownName { what, expected, found } => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))
             }

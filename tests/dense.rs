@@ -6,7 +6,7 @@
 use speclab::data::{cie1931, lights, patches};
 use speclab::sampling::reference;
 use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Observer};
-use speclab::{Error, Spectrum, Xyz};
+use speclab::{Spectrum, Xyz};
 
 /// The largest |dense − source| every 0.01 nm over 380–730 nm.
 fn worst(source: &dyn Spectrum, dense: &DenseSpectrum) -> f64 {
@@ -44,20 +44,17 @@ fn built_in_spectra_within_the_stated_errors() {
 }
 
 #[test]
-fn zero_outside_the_range_and_steps() {
+fn zero_outside_the_range() {
     let d = DenseSpectrum::new(&lights::D65);
-    assert_eq!(d.step(), 1.0);
     for l in [379.999, 730.001, f64::NAN, f64::NEG_INFINITY, f64::INFINITY] {
         assert_eq!(d.eval(l), 0.0, "{l}");
     }
     assert!((d.eval(730.0) - lights::D65.eval(730.0)).abs() < 1e-12);
-    let coarse = DenseSpectrum::with_step(&lights::D65, 5.0).unwrap();
-    assert_eq!(coarse.step(), 5.0);
-    let rounded = DenseSpectrum::with_step(&lights::D65, 3.0).unwrap().step();
-    assert!((rounded - 350.0 / 117.0).abs() < 1e-12, "rounded to divide 350: {rounded}");
-    for bad in [0.0, -1.0, 0.001, 351.0, f64::NAN, f64::INFINITY] {
-        assert!(matches!(DenseSpectrum::with_step(&lights::D65, bad), Err(Error::Step { .. })), "{bad}");
-    }
+    assert!((d.eval(380.0) - lights::D65.eval(380.0)).abs() < 1e-12);
+    let knots = d.pieces().expect("lines").breaks;
+    assert_eq!((knots.len(), knots[0], knots[350]), (351, 380.0, 730.0));
+    let dark = DenseObserver::new().xyz_bar_lanes(&[f64::NAN, 379.0, 731.0]);
+    assert_eq!(dark, [[0.0; 3]; 3]);
 }
 
 /// A dense table is lines between its knots, so its integrals are exact:

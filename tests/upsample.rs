@@ -8,7 +8,7 @@ use speclab::color::rgb_table::RgbTable;
 use speclab::color::upsample::RgbSpace;
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
 use speclab::spectrum::{RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial};
-use speclab::{Error, LinearSrgb, Spectrum, Xyz};
+use speclab::{Error, LinearSrgb, Spectrum};
 
 /// ΔE00 of the round trip of `rgb` through `albedo`, in CIELAB relative to
 /// the colour space's white.
@@ -87,7 +87,7 @@ fn unbounded_colours_and_illuminants() {
     assert!((y - Y_BAR_INTEGRAL).abs() < 1e-9 * y, "{y} vs {Y_BAR_INTEGRAL}");
     // An illuminant's colour is its rgb, up to its scale.
     let light = RgbIlluminant::new(LinearSrgb::new(1.0, 0.6, 0.2));
-    let emitted = Xyz::from(speclab::sampling::reference::white(&light)) / Y_BAR_INTEGRAL;
+    let emitted = speclab::sampling::reference::white(&light) / Y_BAR_INTEGRAL;
     assert!(space.rgb(emitted).distance(LinearSrgb::new(1.0, 0.6, 0.2)) < 1e-4, "{:?}", space.rgb(emitted));
 }
 

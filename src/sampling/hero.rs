@@ -179,11 +179,9 @@ impl<const K: usize> HeroSample<K> {
     #[must_use]
     pub fn to_xyz_with(&self, observer: &impl Observer, v: SampledSpectrum<K>) -> Xyz {
         let cmf = observer.xyz_bar_lanes(&self.lambda);
-        let mut sum = Xyz::ZERO;
-        for ((c, v), w) in cmf.iter().zip(v.values).zip(self.inv_pdf) {
-            sum += Xyz::from(*c) * (v * w);
-        }
-        sum * (1.0 / K as f64)
+        let terms: [[f64; 3]; K] =
+            std::array::from_fn(|j| cmf[j].map(|c| c * (v.values[j] * self.inv_pdf[j])));
+        Xyz::from(tree_sum(terms)) * (1.0 / K as f64)
     }
 
     /// The luminance alone, `Σⱼ ȳ(λⱼ)·vⱼ / (K·pdfⱼ)`: the Y of
@@ -196,12 +194,26 @@ impl<const K: usize> HeroSample<K> {
     #[must_use]
     pub fn y(&self, v: SampledSpectrum<K>) -> f64 {
         let y_bar = observer::y_bar_lanes(&self.lambda);
-        let mut sum = 0.0;
-        for ((c, v), w) in y_bar.iter().zip(v.values).zip(self.inv_pdf) {
-            sum += c * (v * w);
-        }
-        sum * (1.0 / K as f64)
+        let terms: [[f64; 1]; K] = std::array::from_fn(|j| [y_bar[j] * (v.values[j] * self.inv_pdf[j])]);
+        tree_sum(terms)[0] * (1.0 / K as f64)
     }
+}
+
+/// `Σ terms` pairwise, `(t₀ + t₁) + (t₂ + t₃)`: the additions of
+/// different wavelengths do not wait on each other (the same sum as
+/// `HeroSample::y`'s, term for term, so `y` is `to_xyz`'s Y to the bit).
+#[inline(always)]
+fn tree_sum<const K: usize, const D: usize>(mut terms: [[f64; D]; K]) -> [f64; D] {
+    let mut width = 1;
+    while width < K {
+        let mut i = 0;
+        while i + width < K {
+            terms[i] = std::array::from_fn(|c| terms[i][c] + terms[i + width][c]);
+            i += 2 * width;
+        }
+        width *= 2;
+    }
+    if K == 0 { [0.0; D] } else { terms[0] }
 }
 
 /// `u − ⌊u⌋` in [0, 1), without libm (baseline x86-64 has no rounding

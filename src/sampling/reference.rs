@@ -41,10 +41,10 @@ use crate::spectrum::{Spectrum, integrate};
 /// integration piece by piece. Both exact for piecewise polynomials.
 #[must_use]
 pub fn xyz(light: &impl Spectrum, surface: &impl Spectrum) -> Xyz {
-    if let (Some(l), Some(s)) = (light.as_tabulated(), surface.as_tabulated()) {
-        if let Some(weights) = l.weights_for(s) {
-            return PreparedLight::borrowed(l, weights).xyz(s);
-        }
+    if let (Some(l), Some(s)) = (light.as_tabulated(), surface.as_tabulated())
+        && let Some(weights) = l.weights_for(s)
+    {
+        return PreparedLight::borrowed(l, weights).xyz(s);
     }
     xyz_of_product(&[light as &dyn Spectrum, surface])
 }

@@ -1,12 +1,15 @@
-//! Dense tables: any spectrum resampled at a fixed step over 380–730 nm
-//! (1 nm by default), for evaluation in one lookup, as renderers do
-//! (pbrt-v4's `DenselySampledSpectrum`).
+//! Dense tables: any spectrum resampled every nanometre over 380–730 nm,
+//! for evaluation in one lookup, as renderers do (pbrt-v4's
+//! `DenselySampledSpectrum`, also 1 nm).
 //!
-//! A [`DenseSpectrum`] keeps, per step, the value at its start and the slope
-//! to the next: evaluation is one segment index, one 16-byte load and one
-//! multiply-add: the line through the source's values at the steps. Outside
-//! 380–730 nm it is zero. [`DenseObserver`] is the same for x̄, ȳ, z̄
-//! together (one 48-byte row per step), for `HeroSample::to_xyz_with`.
+//! A [`DenseSpectrum`] keeps, per nanometre, the value at its start and the
+//! slope to the next: evaluation is one index, one 16-byte load and one
+//! multiply-add: the line through the source's values at whole nanometres.
+//! Outside 380–730 nm it is zero. [`DenseObserver`] is the same for x̄, ȳ,
+//! z̄ together (one 48-byte row per nanometre), for
+//! `HeroSample::to_xyz_with`. The grid is fixed (not a field), so when a
+//! light, a surface and the observer are looked up at one wavelength, the
+//! index is computed once.
 //!
 //! **Accuracy** (the largest |dense − source| over 380–730 nm, measured
 //! every 0.01 nm, 1 nm step; `tests/dense.rs` holds these bounds): the
@@ -33,57 +36,55 @@
 
 use std::borrow::Cow;
 
-use crate::error::Error;
 use crate::spectrum::generic::{Pieces, Spectrum};
-use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::observer::{self, Observer};
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
-/// A spectrum resampled at a fixed step over 380–730 nm: one lookup per
+/// Steps of 1 nm from 380 to 730 nm.
+const STEPS: usize = 350;
+
+/// The step of `lambda` (nm) and where in it: `k = ⌊λ − 380⌋` clamped to
+/// the table (NaN and ±∞ included), `t = λ − 380 − k`, and whether λ is in
+/// 380–730 nm. The grid is a constant, so that the light's, the surface's
+/// and the observer's lookups at one wavelength are computed once.
+#[inline(always)]
+fn step_of(lambda: f64) -> (usize, f64, bool) {
+    let x = lambda - LAMBDA_MIN;
+    let c = if x > 0.0 { x } else { 0.0 };
+    let c = if c < (STEPS - 1) as f64 { c } else { (STEPS - 1) as f64 };
+    // SAFETY: c is finite and in [0, 349] (NaN compares false above).
+    let k = unsafe { c.to_int_unchecked::<i32>() } as usize;
+    (k, x - k as f64, (lambda - LAMBDA_MIN) * (LAMBDA_MAX - lambda) >= 0.0)
+}
+
+/// A spectrum resampled every nanometre over 380–730 nm: one lookup per
 /// wavelength.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DenseSpectrum {
-    lookup: UniformLookup,
-    /// The knots, nm: 380, 380 + h, …, 730.
-    knots: Vec<f64>,
     /// Per step: the value at its start and the slope to the next knot.
-    lines: Vec<[f64; 2]>,
+    lines: Box<[[f64; 2]; STEPS]>,
 }
-
-/// The smallest step [`DenseSpectrum::with_step`] takes, nm.
-pub const MIN_STEP: f64 = 0.01;
 
 impl DenseSpectrum {
     /// `s` at every whole nanometre from 380 to 730.
     #[must_use]
     pub fn new(s: &(impl Spectrum + ?Sized)) -> Self {
-        Self::build(s, 350)
-    }
-
-    /// `s` every `step` nm (finite, at least [`MIN_STEP`] and at most 350;
-    /// rounded to the nearest step that divides 350 nm).
-    pub fn with_step(s: &(impl Spectrum + ?Sized), step: f64) -> Result<Self, Error> {
-        if !(step.is_finite() && (MIN_STEP..=LAMBDA_WIDTH).contains(&step)) {
-            return Err(Error::Step { step });
-        }
-        Ok(Self::build(s, (LAMBDA_WIDTH / step).round().max(1.0) as usize))
-    }
-
-    fn build(s: &(impl Spectrum + ?Sized), steps: usize) -> Self {
-        let h = LAMBDA_WIDTH / steps as f64;
-        let knots: Vec<f64> = (0..=steps).map(|i| LAMBDA_MIN + i as f64 * h).collect();
+        let knots: Vec<f64> = (0..=STEPS).map(|i| LAMBDA_MIN + i as f64).collect();
         let mut values = vec![0.0; knots.len()];
         s.eval_many(&knots, &mut values);
-        let lines =
-            values.windows(2).zip(knots.windows(2)).map(|(v, k)| [v[0], (v[1] - v[0]) / (k[1] - k[0])]);
-        let lookup = UniformLookup::regular(LAMBDA_MIN, h, steps);
-        DenseSpectrum { lookup, lines: lines.collect(), knots }
+        let lines = std::array::from_fn(|k| [values[k], values[k + 1] - values[k]]);
+        DenseSpectrum { lines: Box::new(lines) }
     }
+}
 
-    /// The step, nm.
-    #[must_use]
-    pub fn step(&self) -> f64 {
-        self.knots[1] - self.knots[0]
+impl DenseSpectrum {
+    /// The line of `lambda`'s step at `lambda`; zero outside the range.
+    #[inline(always)]
+    fn line(&self, lambda: f64) -> f64 {
+        let (k, t, inside) = step_of(lambda);
+        // SAFETY: k < STEPS, the array's length (`step_of`).
+        let [a, b] = unsafe { *self.lines.get_unchecked(k) };
+        if inside { a + b * t } else { 0.0 }
     }
 }
 
@@ -98,16 +99,15 @@ impl Spectrum for DenseSpectrum {
     #[inline(always)]
     fn eval_many(&self, lambda: &[f64], values: &mut [f64]) {
         for (v, &l) in values.iter_mut().zip(lambda) {
-            let k = self.lookup.segment(l);
-            let ([a, b], knot) = (self.lines[k], self.knots[k]);
-            let inside = (l - LAMBDA_MIN) * (LAMBDA_MAX - l) >= 0.0;
-            *v = if inside { a + b * (l - knot) } else { 0.0 };
+            *v = self.line(l);
         }
     }
 
-    /// Lines between the knots (zero outside 380–730 nm).
+    /// Lines between whole nanometres (zero outside 380–730 nm).
     fn pieces(&self) -> Option<Pieces<'_>> {
-        Some(Pieces { breaks: Cow::Borrowed(&self.knots), degree: 1 })
+        static KNOTS: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
+        let knots = KNOTS.get_or_init(|| (0..=STEPS).map(|i| LAMBDA_MIN + i as f64).collect());
+        Some(Pieces { breaks: Cow::Borrowed(knots), degree: 1 })
     }
 }
 
@@ -115,9 +115,8 @@ impl Spectrum for DenseSpectrum {
 /// z̄ and their slopes in one row per step.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DenseObserver {
-    lookup: UniformLookup,
     /// Per step: `[x̄, ȳ, z̄, x̄', ȳ', z̄']` at its start.
-    rows: Vec<[f64; 6]>,
+    rows: Box<[[f64; 6]; STEPS]>,
 }
 
 impl Default for DenseObserver {
@@ -130,12 +129,12 @@ impl DenseObserver {
     /// The observer at every whole nanometre, 380 to 730.
     #[must_use]
     pub fn new() -> Self {
-        let knots: Vec<f64> = (0..=350).map(|i| LAMBDA_MIN + f64::from(i)).collect();
-        let at: Vec<[f64; 3]> = knots.iter().map(|&l| observer::xyz_bar(l)).collect();
-        let rows = at
-            .windows(2)
-            .map(|w| std::array::from_fn(|i| if i < 3 { w[0][i] } else { w[1][i - 3] - w[0][i - 3] }));
-        DenseObserver { lookup: UniformLookup::regular(LAMBDA_MIN, 1.0, 350), rows: rows.collect() }
+        let at: Vec<[f64; 3]> = (0..=STEPS).map(|i| observer::xyz_bar(LAMBDA_MIN + i as f64)).collect();
+        let rows = std::array::from_fn(|k| {
+            let (a, b) = (at[k], at[k + 1]);
+            [a[0], a[1], a[2], b[0] - a[0], b[1] - a[1], b[2] - a[2]]
+        });
+        DenseObserver { rows: Box::new(rows) }
     }
 }
 
@@ -144,10 +143,9 @@ impl Observer for DenseObserver {
     fn xyz_bar_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [[f64; 3]; K] {
         let mut out = [[0.0; 3]; K];
         for (out, &l) in out.iter_mut().zip(lambda) {
-            let k = self.lookup.segment(l);
-            let r = &self.rows[k];
-            let t = l - (LAMBDA_MIN + k as f64);
-            let inside = (l - LAMBDA_MIN) * (LAMBDA_MAX - l) >= 0.0;
+            let (k, t, inside) = step_of(l);
+            // SAFETY: k < STEPS, the array's length (`step_of`).
+            let r = unsafe { self.rows.get_unchecked(k) };
             let v = [r[0] + r[3] * t, r[1] + r[4] * t, r[2] + r[5] * t];
             *out = if inside { v } else { [0.0; 3] };
         }

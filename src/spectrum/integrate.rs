@@ -64,7 +64,7 @@ pub(crate) fn white(light: &dyn Spectrum) -> [f64; 3] {
 /// the data's 5 nm grid, so a closure that computes a tabulated spectrum
 /// integrates exactly).
 pub(crate) fn integral(s: &dyn Spectrum, a: f64, b: f64) -> f64 {
-    if !(a < b) {
+    if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
         return 0.0;
     }
     let (points, degree) = match s.pieces() {

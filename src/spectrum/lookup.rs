@@ -34,13 +34,6 @@ impl UniformLookup {
         }
     }
 
-    /// The lookup of `segments` (at least 1) equal steps of `step` nm from
-    /// `first`.
-    pub(crate) const fn regular(first: f64, step: f64, segments: usize) -> UniformLookup {
-        let segments = if segments > 0 { segments } else { 1 };
-        UniformLookup { first, inv_step: 1.0 / step, top: (segments - 1) as f64, segments }
-    }
-
     /// Number of segments this lookup indexes.
     #[inline(always)]
     pub(crate) const fn segments(&self) -> usize {

@@ -52,7 +52,7 @@ pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
 pub use speclab_tables::validate;
 
 pub use analytic::{Blackbody, Constant, FnSpectrum};
-pub use dense::{DenseObserver, DenseSpectrum, MIN_STEP};
+pub use dense::{DenseObserver, DenseSpectrum};
 pub use generic::{Pieces, Spectrum};
 pub use observer::{Cie1931, Observer};
 pub use sampled::{SampledSpectrum, Wavelengths};

@@ -16,7 +16,8 @@
 //! speclab kernel uses the same xorshift32 as the hand-tuned one.
 
 use speclab::spectrum::observer::xyz_bar;
-use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, TabulatedSpectrum, Xyz};
+use speclab::spectrum::{DenseObserver, DenseSpectrum};
+use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum, TabulatedSpectrum, Xyz};
 
 /// Table entries: one per nm from 380 to 730 inclusive.
 pub const ENTRIES: usize = 351;
@@ -101,6 +102,25 @@ pub fn speclab_hero(
     for _ in 0..n {
         let h = HeroSample::<4>::new(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
         sum += h.to_xyz(light.sample(&h) * surface.sample(&h));
+    }
+    sum / n as f64
+}
+
+/// speclab's per-sample path over dense tables (light, surface and
+/// observer every nm, linear between), K = 4: the mean XYZ of `n` hero
+/// samples.
+#[inline(never)]
+pub fn speclab_dense_hero(
+    light: &DenseSpectrum,
+    surface: &DenseSpectrum,
+    observer: &DenseObserver,
+    n: usize,
+    rng: &mut XorShift32,
+) -> Xyz {
+    let mut sum = Xyz::ZERO;
+    for _ in 0..n {
+        let h = HeroSample::<4>::new(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
+        sum += h.to_xyz_with(observer, light.sample(&h) * surface.sample(&h));
     }
     sum / n as f64
 }
