@@ -88,6 +88,13 @@ pub enum Error {
         /// The components given.
         rgb: [f64; 3],
     },
+    /// A weight of a sum that is not finite and non-negative.
+    Weight {
+        /// Which term.
+        index: usize,
+        /// The weight given.
+        weight: f64,
+    },
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
         /// What was looked up, e.g. `a built-in light`.
@@ -129,6 +136,9 @@ impl fmt::Display for Error {
                 "expected linear sRGB components in [0, 1], found ({}, {}, {})",
                 rgb[0], rgb[1], rgb[2]
             ),
+            Error::Weight { index, weight } => {
+                write!(f, "term {index}: expected a finite non-negative weight, found {weight}")
+            }
             Error::UnknownName { what, expected, found } => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))
             }

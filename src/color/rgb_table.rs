@@ -19,9 +19,11 @@
 //! ```
 //! use speclab::LinearSrgb;
 //! use speclab::color::{rgb_table::RgbTable, upsample::RgbSpace};
+//! // RgbTable::srgb() is the full table; a coarse one builds in a moment.
+//! let coarse = RgbTable::new(RgbSpace::srgb(), 8);
 //! let rgb = LinearSrgb::new(0.2, 0.5, 0.3);
-//! let albedo = RgbTable::srgb().albedo(rgb)?;
-//! assert!(RgbSpace::srgb().rgb_of(&albedo).distance(rgb) < 0.01);
+//! let albedo = coarse.albedo(rgb)?;
+//! assert!(RgbSpace::srgb().rgb_of(&albedo).distance(rgb) < 0.05);
 //! # Ok::<(), speclab::Error>(())
 //! ```
 

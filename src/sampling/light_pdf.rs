@@ -3,7 +3,11 @@
 //!
 //! Between consecutive breaks of the light and of the matching functions
 //! every factor is one polynomial (a clamped segment contributes its bound),
-//! so the density is one polynomial per piece, of degree at most 6. Its
+//! so the density is one polynomial per piece, of degree at most 6. (A
+//! light that is not piecewise polynomial, a blackbody or a sum with one,
+//! is taken as the line through its values at the ends of each piece of at
+//! most 5 nm: the density is then that line's, still exact for sampling
+//! since `pdf` and `sample` use the same table.) Its
 //! coefficients are exact products of the segments' polynomials, its
 //! integral per piece is exact, and the CDF at the piece ends is their
 //! running sum. Sampling finds the piece through a guide table (the piece
@@ -18,7 +22,7 @@
 
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::piecewise::View;
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, Spectrum, TabulatedSpectrum, observer};
 
 /// Coefficients of the density on one piece, in `t = λ − start`.
 pub(crate) type Poly = [f64; 7];
@@ -36,25 +40,28 @@ pub(crate) struct PiecewisePdf {
 }
 
 impl PiecewisePdf {
-    /// The density ∝ `light·Σ alpha꜀·cmf꜀`, or `None` if it integrates to
+    /// The density ∝ `light·Σ alpha꜀·c̄꜀`, or `None` if it integrates to
     /// zero (or to something not finite) over 380–730 nm.
-    pub(crate) fn new(light: &View, cmf: &[View; 3], alpha: [f64; 3]) -> Option<Self> {
-        let (a, b) = (LAMBDA_MIN.max(light.lambda[0]), LAMBDA_MAX.min(light.lambda[light.lambda.len() - 1]));
-        if a >= b {
-            return None;
+    pub(crate) fn new(light: &dyn Spectrum, alpha: [f64; 3]) -> Option<Self> {
+        let cmf = observer::views();
+        let (a, b) = (LAMBDA_MIN, LAMBDA_MAX);
+        let pieces = light.pieces();
+        let mut ends: Vec<f64> = cmf.iter().flat_map(|v| v.breaks.iter().copied()).chain([a, b]).collect();
+        if let Some(p) = &pieces {
+            ends.extend(p.breaks.iter().copied());
         }
-        let mut ends: Vec<f64> = [light, &cmf[0], &cmf[1], &cmf[2]]
-            .iter()
-            .flat_map(|v| v.breaks.iter().copied())
-            .filter(|&x| x > a && x < b)
-            .chain([a, b])
-            .collect();
+        ends.retain(|&x| x >= a && x <= b);
         ends.sort_by(f64::total_cmp);
         ends.dedup();
+        let view = light.as_tabulated().map(TabulatedSpectrum::view);
+        let degree = pieces.map(|p| p.degree);
         let polys: Vec<Poly> = ends
             .windows(2)
             .map(|w| {
-                let l = piece_poly(light, w[0], w[1]);
+                let l = match &view {
+                    Some(v) => piece_poly(v, w[0], w[1]),
+                    None => spectrum_piece(light, w[0], w[1], degree),
+                };
                 let c = (0..3).fold([0.0; 4], |acc, i| {
                     let p = piece_poly(&cmf[i], w[0], w[1]);
                     std::array::from_fn(|j| acc[j] + alpha[i] * p[j])
@@ -68,7 +75,7 @@ impl PiecewisePdf {
             cdf.push(cdf[cdf.len() - 1] + primitive(p, w[1] - w[0]));
         }
         let total = cdf[cdf.len() - 1];
-        let bright = total.is_finite() && total > 0.0;
+        let bright = total.is_finite() && total > 0.0 && cdf.windows(2).all(|c| c[1] >= c[0]);
         let guide = guide(&cdf, 2 * polys.len());
         bright.then_some(PiecewisePdf { ends, polys, cdf, guide })
     }
@@ -156,6 +163,28 @@ fn piece_poly(v: &View, a: f64, b: f64) -> Coeffs {
         return [v.bounds[1], 0.0, 0.0, 0.0];
     }
     shift(v.coeffs[k], a - v.lambda[k])
+}
+
+/// `s` on `[a, b]` as a cubic in `t = λ − a`: the polynomial through four
+/// values inside the piece when `s` is a polynomial of `degree` ≤ 3 there
+/// (exact, to rounding), else the line through its values at the ends
+/// (non-negative where `s` is).
+fn spectrum_piece(s: &dyn Spectrum, a: f64, b: f64, degree: Option<usize>) -> Coeffs {
+    let h = b - a;
+    match degree {
+        Some(d) if d <= 3 => {
+            let t = [0.125, 0.375, 0.625, 0.875].map(|f| f * h);
+            let y = t.map(|t| s.eval(a + t));
+            // The cubic through (t, y), via the interpolant of the tables'
+            // own four-point stencil (k = 0 of a four-knot table).
+            let c = interp::cubic_segment(&t, &y, 0);
+            shift(c, -t[0])
+        }
+        _ => {
+            let (ya, yb) = (s.eval(a).max(0.0), s.eval(b).max(0.0));
+            [ya, (yb - ya) / h, 0.0, 0.0]
+        }
+    }
 }
 
 /// `p(t + d)` as a polynomial in `t` (a Taylor shift of a cubic).

@@ -23,6 +23,34 @@
 //!
 //! This floor uses the spectrum and colour floors below it.
 //!
+//! **From a renderer's own numbers.** Nothing here needs a random-number
+//! generator: a renderer with its own sampler (Sobol', blue noise, a
+//! hash) spreads its uniform numbers with [`strata::Strata::point`] and
+//! draws wavelengths with any pdf, or hands over its own wavelengths:
+//!
+//! ```
+//! use speclab::{data::{lights, patches}, HeroSample, Xyz};
+//! use speclab::sampling::{pdf::{LightPdf, Uniform, Visible, WavelengthPdf}, strata::Strata};
+//! let own = |i: usize| ((i as f64 + 0.5) * 0.754_877_666_246_692_7).fract(); // the renderer's sequence
+//! let f11 = LightPdf::light(&lights::F11)?;
+//! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform, &Visible, &f11];
+//! let n = 64;
+//! for pdf in pdfs {
+//!     let mut pixel = Xyz::ZERO;
+//!     for i in 0..n {
+//!         let u = Strata::Jittered.point(i, n, 4, own(i)); // sample i of n, hero width 4
+//!         let h = HeroSample::<4>::from_pdf(u, pdf);
+//!         pixel += h.to_xyz(h.sample(&lights::F11) * h.sample(&patches::G4));
+//!     }
+//!     let exact = speclab::sampling::reference::xyz(&lights::F11, &patches::G4);
+//!     assert!(((pixel / n as f64).y - exact.y).abs() < 0.1 * exact.y);
+//! }
+//! // Or wavelengths and densities from the renderer's own distribution:
+//! let h = HeroSample::from_wavelengths([450.0, 520.0, 610.0, 680.0], [1.0 / 350.0; 4])?;
+//! assert!(h.to_xyz(h.sample(&lights::D65)).y > 0.0);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+//!
 //! ```
 //! use speclab::{data::{lights, patches}, HeroSample, RegularSpectrum, sampling::reference};
 //! let h = HeroSample::<4>::new(0.5);

@@ -13,25 +13,41 @@
 //!   light's lines.
 //! - [`LightPdf::balanced`]: `p ∝ L(λ)·Σ꜀ c̄꜀(λ)/white꜀`, giving each
 //!   channel its share relative to the light's white.
+//! - [`LightPdf::weighted`]: any spectrum, any observer weights: a scene's
+//!   lights summed ([`Mixture`](crate::spectrum::Mixture)), a light times a
+//!   material, a table of the renderer's.
+//!
+//! Every density here takes any `u` (clamped into `[0, 1)`) and any
+//! wavelength, and is object-safe: `&dyn WavelengthPdf` goes where a pdf
+//! does, with no double reference.
 //!
 //! Hero sampling with any of them rotates in primary-sample space:
 //! [`HeroSample::from_pdf`](crate::HeroSample::from_pdf) draws
 //! `λⱼ = P⁻¹((u + j/K) mod 1)`, so each `λⱼ` has density p.
 //!
 //! ```
-//! use speclab::{data::lights, sampling::pdf::{LightPdf, Visible, WavelengthPdf}};
+//! use speclab::{data::lights, HeroSample, spectrum::Mixture};
+//! use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 //! let f11 = LightPdf::light(&lights::F11)?;
 //! let lambda = f11.sample(0.5);
 //! assert!(f11.pdf(lambda) > 0.0);
-//! assert!((f11.cdf(lambda) - 0.5).abs() < 1e-12);
+//! assert!((f11.cdf(lambda).unwrap() - 0.5).abs() < 1e-12);
 //! assert!(Visible.pdf(555.0) > Visible.pdf(400.0));
+//! // A scene with two lights, the second at half strength:
+//! let scene = LightPdf::light(&Mixture::new().with(1.0, &lights::F11)?.with(0.5, &lights::D65)?)?;
+//! // Chosen at run time, without a double reference:
+//! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform, &Visible, &scene];
+//! for pdf in pdfs {
+//!     let h = HeroSample::<4>::from_pdf(0.3, pdf);
+//!     assert!(h.pdf().iter().all(|&p| p > 0.0));
+//! }
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
 use crate::error::Error;
 use crate::sampling::light_pdf::PiecewisePdf;
 use crate::sampling::reference;
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, TabulatedSpectrum, observer};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
 /// A probability density over wavelengths that can be sampled by inverting
 /// its cumulative distribution.
@@ -42,9 +58,12 @@ pub trait WavelengthPdf {
     /// The density at `lambda`, 1/nm; zero outside the support.
     fn pdf(&self, lambda: f64) -> f64;
 
-    /// The cumulative distribution at `lambda`: `∫ pdf` up to it, in
-    /// `[0, 1]` (0 for NaN).
-    fn cdf(&self, lambda: f64) -> f64;
+    /// The cumulative distribution at `lambda`, `∫ pdf` up to it, in
+    /// `[0, 1]` (0 for NaN), if the distribution knows it: renderers never
+    /// ask; exact variances (`study::variance`) do. `None` by default.
+    fn cdf(&self, _lambda: f64) -> Option<f64> {
+        None
+    }
 
     /// `1/pdf(λ)`, nm, what an estimate multiplies by; 0 where the density
     /// is 0 (or so small that its reciprocal overflows).
@@ -93,81 +112,100 @@ impl WavelengthPdf for Uniform {
         if (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) { LAMBDA_WIDTH } else { 0.0 }
     }
 
-    fn cdf(&self, lambda: f64) -> f64 {
+    fn cdf(&self, lambda: f64) -> Option<f64> {
         let c = (lambda - LAMBDA_MIN) / LAMBDA_WIDTH;
-        if c > 0.0 { c.min(1.0) } else { 0.0 }
+        Some(if c > 0.0 { c.min(1.0) } else { 0.0 })
     }
 }
 
 /// pbrt-v4's visible-wavelength density, `∝ 1/cosh²(a·(λ − 538))` with
 /// `a = 0.0072/nm`, renormalised to 380–730 nm. Its CDF is a difference of
-/// `tanh`, inverted by `atanh`.
+/// `tanh`, inverted by one `atanh` per wavelength; its constants are
+/// computed once (here, as literals; a test checks them against `tanh`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Visible;
 
 impl Visible {
     const A: f64 = 0.0072;
-    const CENTRE: f64 = 538.0;
+    const CENTER: f64 = 538.0;
+    /// `tanh(a·(380 − 538))`.
+    pub(crate) const T0: f64 = -0.813_604_361_381_150_8;
+    /// `tanh(a·(730 − 538))`.
+    pub(crate) const T1: f64 = 0.881_487_552_831_487_7;
+    /// `a / (T1 − T0)`: the density is this times `1 − tanh²`.
+    const NORM: f64 = Self::A / (Self::T1 - Self::T0);
 
-    /// `tanh(a·(λ − 538))` at the two ends of the range.
-    fn ends() -> (f64, f64) {
-        let at = |l: f64| (Self::A * (l - Self::CENTRE)).tanh();
-        (at(LAMBDA_MIN), at(LAMBDA_MAX))
+    /// `tanh(a·(λ − 538))`, the CDF's numerator, for λ in the range.
+    #[inline]
+    fn tanh_at(lambda: f64) -> f64 {
+        (Self::A * (lambda - Self::CENTER)).tanh()
     }
 }
 
 impl WavelengthPdf for Visible {
+    #[inline]
     fn sample(&self, u: f64) -> f64 {
-        let (t0, t1) = Self::ends();
-        let lambda = Self::CENTRE + (t0 + unit(u) * (t1 - t0)).atanh() / Self::A;
-        lambda.clamp(LAMBDA_MIN, LAMBDA_MAX)
+        self.sample_with_inv_pdf(u).0
     }
 
+    #[inline]
     fn pdf(&self, lambda: f64) -> f64 {
         if !(LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) {
             return 0.0;
         }
-        let (t0, t1) = Self::ends();
-        let c = (Self::A * (lambda - Self::CENTRE)).cosh();
-        Self::A / (c * c * (t1 - t0))
+        let y = Self::tanh_at(lambda);
+        Self::NORM * (1.0 - y * y)
     }
 
-    fn cdf(&self, lambda: f64) -> f64 {
+    fn cdf(&self, lambda: f64) -> Option<f64> {
         if lambda.is_nan() {
-            return 0.0;
+            return Some(0.0);
         }
-        let (t0, t1) = Self::ends();
         let l = lambda.clamp(LAMBDA_MIN, LAMBDA_MAX);
-        ((Self::A * (l - Self::CENTRE)).tanh() - t0) / (t1 - t0)
+        Some((Self::tanh_at(l) - Self::T0) / (Self::T1 - Self::T0))
+    }
+
+    /// One `atanh`: at `y = tanh(a·(λ − 538))`, `1/cosh² = 1 − y²`, so the
+    /// density needs no `cosh`.
+    #[inline]
+    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
+        let y = Self::T0 + unit(u) * (Self::T1 - Self::T0);
+        let lambda = (Self::CENTER + y.atanh() / Self::A).clamp(LAMBDA_MIN, LAMBDA_MAX);
+        (lambda, reciprocal(Self::NORM * (1.0 - y * y)))
     }
 }
 
-/// A density that follows a light: `∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)`, tabulated exactly
-/// (see `light_pdf.rs`) when the pdf is made, for any light.
+/// A density that follows a light, or any spectrum: `∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)`,
+/// tabulated exactly (see `light_pdf.rs`) when the pdf is made (about 7 µs
+/// for a built-in light): the general piecewise pdf for a scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LightPdf {
     table: PiecewisePdf,
 }
 
 impl LightPdf {
-    /// `p ∝ L(λ)·(x̄ + ȳ + z̄)(λ)`. An error if the light has no power where
-    /// the observer sees, within 380–730 nm.
-    pub fn light(light: &TabulatedSpectrum) -> Result<Self, Error> {
-        Self::new(light, [1.0; 3])
+    /// `p ∝ L(λ)·(x̄ + ȳ + z̄)(λ)`, for any light (a sum of lights:
+    /// [`Mixture`](crate::spectrum::Mixture)). An error if the light has no
+    /// power where the observer sees, within 380–730 nm.
+    pub fn light(light: &impl Spectrum) -> Result<Self, Error> {
+        Self::weighted(light, [1.0; 3])
     }
 
     /// `p ∝ L(λ)·Σ꜀ c̄꜀(λ)/white꜀`, with white꜀ the light's perfect white
     /// (a channel whose white is zero gets no weight: its estimate is zero
     /// anyway). The same error as [`LightPdf::light`].
-    pub fn balanced(light: &TabulatedSpectrum) -> Result<Self, Error> {
+    pub fn balanced(light: &impl Spectrum) -> Result<Self, Error> {
         let alpha = reference::white(light).to_array().map(|w| if w > 0.0 { 1.0 / w } else { 0.0 });
-        Self::new(light, alpha)
+        Self::weighted(light, alpha)
     }
 
-    /// `p ∝ L·Σ alpha꜀·c̄꜀`, or [`Error::DarkLight`] if that has no mass.
-    fn new(light: &TabulatedSpectrum, alpha: [f64; 3]) -> Result<Self, Error> {
-        let table = PiecewisePdf::new(&light.view(), &observer::views(), alpha);
-        table.map(|table| LightPdf { table }).ok_or(Error::DarkLight)
+    /// `p ∝ S(λ)·Σ꜀ alpha꜀·c̄꜀(λ)` for any spectrum `S` and observer weights
+    /// `alpha` (each finite and non-negative; others count as 0): exact
+    /// where `S` is piecewise polynomial (see `light_pdf.rs`). An
+    /// [`Error::DarkLight`] if that has no mass over 380–730 nm.
+    pub fn weighted(spectrum: &impl Spectrum, alpha: [f64; 3]) -> Result<Self, Error> {
+        let alpha = alpha.map(|a| if a.is_finite() && a > 0.0 { a } else { 0.0 });
+        PiecewisePdf::new(spectrum, alpha).map(|table| LightPdf { table }).ok_or(Error::DarkLight)
     }
 }
 
@@ -182,8 +220,8 @@ impl WavelengthPdf for LightPdf {
         self.table.pdf(lambda)
     }
 
-    fn cdf(&self, lambda: f64) -> f64 {
-        self.table.cdf(lambda)
+    fn cdf(&self, lambda: f64) -> Option<f64> {
+        Some(self.table.cdf(lambda))
     }
 
     #[inline]

@@ -9,7 +9,8 @@
 //!   bounds. The reference: exact, and the slowest to evaluate.
 //! - [`DenseSpectrum`]: any spectrum resampled every nanometre, one lookup
 //!   per wavelength; [`DenseObserver`], the observer so.
-//! - [`Constant`], [`Blackbody`], [`FnSpectrum`] (a closure).
+//! - [`Constant`], [`Blackbody`], [`FnSpectrum`] (a closure), [`Mixture`]
+//!   (a weighted sum: a scene's lights).
 //! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`]: spectra of RGB
 //!   colours (sigmoid polynomials); fitted by `color::upsample`.
 //! - [`SampledSpectrum`]: a spectrum's values at K wavelengths (any
@@ -38,6 +39,7 @@ mod dense;
 mod generic;
 pub(crate) mod integrate;
 pub(crate) mod lookup;
+mod mixture;
 pub mod observer;
 pub(crate) mod piecewise;
 pub(crate) mod pointwise;
@@ -54,6 +56,7 @@ pub use speclab_tables::validate;
 pub use analytic::{Blackbody, Constant, FnSpectrum};
 pub use dense::{DenseObserver, DenseSpectrum};
 pub use generic::{Pieces, Spectrum};
+pub use mixture::Mixture;
 pub use observer::{Cie1931, Observer};
 pub use sampled::{SampledSpectrum, Wavelengths};
 pub use sigmoid::{RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial, sigmoid};

@@ -42,7 +42,9 @@ pub fn hero<const K: usize>(light: &TabulatedSpectrum, surface: &TabulatedSpectr
 
 /// Per-channel variance of one `HeroSample<K>` estimate of
 /// `light × surface` with wavelengths drawn from `pdf`
-/// ([`crate::HeroSample::from_pdf`]).
+/// ([`crate::HeroSample::from_pdf`]). The pieces in primary-sample space
+/// come from the pdf's CDF at the factors' breaks; a pdf without a CDF is
+/// integrated over 1,024 equal pieces of `u` instead.
 #[must_use]
 pub fn hero_with<const K: usize>(
     light: &TabulatedSpectrum,
@@ -62,15 +64,17 @@ pub fn hero_with<const K: usize>(
         }
         sum.map(|s| s / K as f64)
     };
-    let pieces = quadrature::pieces(
-        [light, surface]
-            .into_iter()
-            .chain(observer::CMFS)
-            .flat_map(|s| s.breaks().iter().copied())
-            .filter(|b| (LAMBDA_MIN..=LAMBDA_MAX).contains(b))
-            .map(|b| pdf.cdf(b) % period)
-            .chain([0.0, period]),
-    );
+    let breaks = [light, surface]
+        .into_iter()
+        .chain(observer::CMFS)
+        .flat_map(|s| s.breaks().iter().copied())
+        .filter(|b| (LAMBDA_MIN..=LAMBDA_MAX).contains(b));
+    let pieces = match pdf.cdf(LAMBDA_MIN) {
+        Some(_) => {
+            quadrature::pieces(breaks.filter_map(|b| pdf.cdf(b)).map(|c| c % period).chain([0.0, period]))
+        }
+        None => (0..=1024).map(|i| period * f64::from(i) / 1024.0).collect(),
+    };
     // Each piece split in four: exact for the uniform pdf anyway, and a
     // finer rule for the others.
     let fine: Vec<f64> = pieces
