@@ -77,6 +77,16 @@ pub enum Error {
     /// A light with no power where the observer sees, within 380–730 nm: no
     /// wavelength pdf can follow it.
     DarkLight,
+    /// A bin count outside what a binned pdf supports.
+    BinCount {
+        /// The count asked for.
+        bins: usize,
+        /// The largest count supported (the smallest is 1).
+        max: usize,
+    },
+    /// A density with no mass over 380–730 nm (or a mass that is not
+    /// finite): nothing to sample.
+    NoMass,
     /// A blackbody temperature that is not finite and positive (kelvin).
     Temperature {
         /// The temperature given, K.
@@ -125,6 +135,10 @@ impl fmt::Display for Error {
                 write!(f, "expected a hero width of {} wavelengths, found {k}", or_list(widths.iter()))
             }
             Error::BucketCount { m, max } => write!(f, "expected a bucket count from 1 to {max}, found {m}"),
+            Error::BinCount { bins, max } => write!(f, "expected a bin count from 1 to {max}, found {bins}"),
+            Error::NoMass => {
+                write!(f, "expected a density with finite positive mass over 380-730 nm, found none")
+            }
             Error::DarkLight => {
                 write!(f, "expected a light with power where the observer sees (380-730 nm), found none")
             }

@@ -118,6 +118,8 @@ fn luminance_alone_equals_to_xyz_y() {
             let v = data::lights::F11.sample(&h) * data::patches::H4.sample(&h);
             let (y, xyz) = (h.y(v), h.to_xyz(v).y);
             assert!((y - xyz).abs() <= 1e-12 * xyz.abs(), "{h:?}: {y} vs {xyz}");
+            let dotted = v.dot(&h.y_weights());
+            assert!((dotted - y).abs() <= 1e-12 * y.abs(), "{h:?}: {dotted} vs {y}");
         }
     }
     // Normalised by ∫ȳ, a constant spectrum's luminance is the constant.
@@ -157,6 +159,7 @@ fn sampled_spectrum_arithmetic() {
     c /= S::splat(4.0);
     assert_eq!(c, S::new([0.75, 0.25, -0.5, 0.75]));
     assert_eq!(a.average(), 2.5);
+    assert_eq!(a.dot(&b), 2.0 + 0.0 - 3.0 + 2.0);
     assert_eq!(b.max_value(), 2.0);
     assert_eq!((a[0], a[3]), (1.0, 4.0));
     c[1] = 9.0;

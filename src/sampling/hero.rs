@@ -199,6 +199,26 @@ impl<const K: usize> HeroSample<K> {
     }
 }
 
+impl<const K: usize> HeroSample<K> {
+    /// The weights of [`HeroSample::y`], `ȳ(λⱼ)/(K·pdfⱼ)`: `v.dot(&w)` is
+    /// `y(v)` to rounding, for any `v`. A path keeps its wavelengths, so a
+    /// renderer computes these once per path and each bounce's luminance
+    /// (for Russian roulette) is a dot product of K numbers.
+    ///
+    /// ```
+    /// use speclab::{data::patches, HeroSample};
+    /// let h = HeroSample::<4>::new(0.3);
+    /// let (w, albedo) = (h.y_weights(), patches::F4.sample(&h));
+    /// assert!((albedo.dot(&w) - h.y(albedo)).abs() <= 1e-12 * h.y(albedo));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn y_weights(&self) -> SampledSpectrum<K> {
+        let y_bar = observer::y_bar_lanes(&self.lambda);
+        SampledSpectrum::new(std::array::from_fn(|j| y_bar[j] * self.inv_pdf[j] * (1.0 / K as f64)))
+    }
+}
+
 /// `Σ terms` pairwise, `(t₀ + t₁) + (t₂ + t₃)`: the additions of
 /// different wavelengths do not wait on each other (the same sum as
 /// `HeroSample::y`'s, term for term, so `y` is `to_xyz`'s Y to the bit).

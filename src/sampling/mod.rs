@@ -60,6 +60,7 @@
 //! assert!((buckets.y - exact.y).abs() < 0.01 * exact.y && one.y > 0.0);
 //! ```
 
+pub mod binned;
 pub mod buckets;
 pub mod hero;
 mod light_pdf;

@@ -230,3 +230,22 @@ impl WavelengthPdf for LightPdf {
         (lambda, reciprocal(pdf))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The literal constants are what they say they are.
+    #[test]
+    fn visible_constants_are_tanh_of_the_range_ends() {
+        let t0 = (Visible::A * (LAMBDA_MIN - Visible::CENTER)).tanh();
+        let t1 = (Visible::A * (LAMBDA_MAX - Visible::CENTER)).tanh();
+        assert!((Visible::T0 - t0).abs() <= 2.0 * f64::EPSILON, "{} against {t0}", Visible::T0);
+        assert!((Visible::T1 - t1).abs() <= 2.0 * f64::EPSILON, "{} against {t1}", Visible::T1);
+        // The density integrates to 1 over the range (midpoint rule, 0.01 nm).
+        let n = 35_000;
+        let total: f64 =
+            (0..n).map(|i| Visible.pdf(LAMBDA_MIN + (i as f64 + 0.5) * LAMBDA_WIDTH / n as f64)).sum::<f64>();
+        assert!((total * LAMBDA_WIDTH / n as f64 - 1.0).abs() < 1e-9);
+    }
+}

@@ -40,6 +40,13 @@ macro_rules! pointwise_spectrum {
                 self.values.iter().sum::<f64>() / $n as f64
             }
 
+            /// `Σ selfᵢ·otherᵢ`.
+            #[inline]
+            #[must_use]
+            pub fn dot(&self, other: &Self) -> f64 {
+                self.values.iter().zip(&other.values).map(|(a, b)| a * b).sum()
+            }
+
             /// The largest value (NaN values are ignored unless all are NaN).
             #[inline]
             #[must_use]

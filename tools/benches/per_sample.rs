@@ -59,7 +59,67 @@ fn per_sample(c: &mut Criterion) {
     });
     group.finish();
     path_tracer_ops(c);
+    drawing(c);
+    evaluating(c);
     preparing(c);
+}
+
+/// Drawing one hero sample (K = 4) from each wavelength pdf, statically
+/// dispatched, and the binned light pdf through `&dyn`.
+fn drawing(c: &mut Criterion) {
+    use speclab::sampling::binned::BinnedPdf;
+    use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
+    let light = LightPdf::light(&data::lights::F11).expect("bright");
+    let (binned_light, binned_visible) =
+        (BinnedPdf::new(&light, 256).expect("bins"), BinnedPdf::new(&Visible, 256).expect("bins"));
+    let mut group = c.benchmark_group("drawing a hero sample, K=4");
+    let mut next_u = sequence();
+    group.bench_function("HeroSample::new (uniform)", |b| {
+        b.iter(|| HeroSample::<4>::new(black_box(next_u())))
+    });
+    group.bench_function("from_pdf Uniform", |b| {
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Uniform))
+    });
+    group.bench_function("from_pdf Visible", |b| {
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Visible))
+    });
+    group.bench_function("from_pdf BinnedPdf of Visible", |b| {
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &binned_visible))
+    });
+    group.bench_function("from_pdf LightPdf F11 (exact)", |b| {
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &light))
+    });
+    group.bench_function("from_pdf BinnedPdf of LightPdf F11", |b| {
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &binned_light))
+    });
+    let dynamic: &dyn WavelengthPdf = &binned_light;
+    group.bench_function("from_pdf BinnedPdf F11 via &dyn", |b| {
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), black_box(dynamic)))
+    });
+    group.finish();
+}
+
+/// A spectrum at a hero sample's 4 wavelengths, by kind of spectrum; making
+/// an RGB albedo.
+fn evaluating(c: &mut Criterion) {
+    use speclab::LinearSrgb;
+    use speclab::color::rgb_table::RgbTable;
+    use speclab::spectrum::{DenseSpectrum, RgbAlbedo};
+    let h = HeroSample::<4>::new(0.3);
+    let patch = &data::patches::H4;
+    let dense = DenseSpectrum::new(patch);
+    let rgb = LinearSrgb::from([0.6, 0.3, 0.1]);
+    let albedo = RgbAlbedo::new(rgb).expect("an albedo");
+    let table = RgbTable::srgb();
+    let mut group = c.benchmark_group("a spectrum at 4 wavelengths");
+    group.bench_function("TabulatedSpectrum (exact cubic)", |b| {
+        b.iter(|| black_box(h).sample(black_box(patch)))
+    });
+    group.bench_function("DenseSpectrum (1 nm lines)", |b| b.iter(|| black_box(h).sample(black_box(&dense))));
+    group.bench_function("RgbAlbedo (sigmoid)", |b| b.iter(|| black_box(h).sample(black_box(&albedo))));
+    group.bench_function("RgbAlbedo::new (Gauss-Newton fit)", |b| b.iter(|| RgbAlbedo::new(black_box(rgb))));
+    group.bench_function("RgbTable::albedo (lookup)", |b| b.iter(|| table.albedo(black_box(rgb))));
+    group.finish();
 }
 
 /// Each operation a path tracer adds to the per-sample path, on K = 4.

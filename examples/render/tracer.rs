@@ -1,0 +1,217 @@
+//! The path tracer behind `render`: a closed box of ColorChecker walls, two
+//! spheres and an RGB-textured back wall, lit by a square light in the
+//! ceiling. Lambertian surfaces, next-event estimation to the light,
+//! cosine-weighted bounces, Russian roulette.
+//!
+//! One tracer serves two modes ([`Paint`]): spectral (hero samples of four
+//! wavelengths, `SampledSpectrum` throughput) and grey (one number per
+//! surface, no spectral work), so the example can time speclab's share.
+
+use std::ops::{AddAssign, Mul, MulAssign};
+
+use speclab::Xyz;
+
+/// A direction or point.
+pub type V3 = [f64; 3];
+
+fn add(a: V3, b: V3) -> V3 {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn scale(a: V3, s: f64) -> V3 {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross(a: V3, b: V3) -> V3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+fn normalize(a: V3) -> V3 {
+    scale(a, 1.0 / dot(a, a).sqrt())
+}
+
+/// What a surface is made of: a spectrum by index, or the texture's texels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Material {
+    /// `albedos[i]`.
+    Patch(usize),
+    /// The 8 × 8 checker of textured colours on the back wall.
+    Texture,
+}
+
+/// A hit: distance, point, normal (facing the ray), material, and the
+/// texel for a textured surface.
+struct Hit {
+    t: f64,
+    point: V3,
+    normal: V3,
+    material: Material,
+    texel: usize,
+    light: bool,
+}
+
+/// The closed box [0, 1]³ with the camera inside, two spheres, and the
+/// light: a square of side 0.3 in the ceiling's middle.
+pub struct Scene {
+    /// `(center, radius, material)`.
+    pub spheres: [(V3, f64, Material); 2],
+    /// Per wall (floor, ceiling, back, left, right, front): its material.
+    pub walls: [Material; 6],
+}
+
+/// Half the light's side, m.
+const LIGHT_HALF: f64 = 0.15;
+/// The light's middle (x, z) in the ceiling.
+const LIGHT_AT: [f64; 2] = [0.5, 0.7];
+
+impl Scene {
+    fn hit(&self, origin: V3, dir: V3) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        // Walls: (axis, position, inward normal sign).
+        let planes =
+            [(1, 0.0, 1.0), (1, 1.0, -1.0), (2, 1.0, -1.0), (0, 0.0, 1.0), (0, 1.0, -1.0), (2, 0.0, 1.0)];
+        for (w, &(axis, at, sign)) in planes.iter().enumerate() {
+            if dir[axis] == 0.0 {
+                continue;
+            }
+            let t = (at - origin[axis]) / dir[axis];
+            if t <= 1e-9 || best.as_ref().is_some_and(|b| t >= b.t) {
+                continue;
+            }
+            let p = add(origin, scale(dir, t));
+            let inside = (0..3).all(|i| i == axis || (-1e-9..=1.0 + 1e-9).contains(&p[i]));
+            if !inside {
+                continue;
+            }
+            let mut normal = [0.0; 3];
+            normal[axis] = sign;
+            let light =
+                w == 1 && (p[0] - LIGHT_AT[0]).abs() < LIGHT_HALF && (p[2] - LIGHT_AT[1]).abs() < LIGHT_HALF;
+            let texel = ((p[0] * 8.0) as usize).min(7) * 8 + ((p[1] * 8.0) as usize).min(7);
+            best = Some(Hit { t, point: p, normal, material: self.walls[w], texel, light });
+        }
+        for &(center, radius, material) in &self.spheres {
+            let oc = sub(origin, center);
+            let (b, c) = (dot(oc, dir), dot(oc, oc) - radius * radius);
+            let disc = b * b - c;
+            if disc < 0.0 {
+                continue;
+            }
+            let t = -b - disc.sqrt();
+            if t <= 1e-9 || best.as_ref().is_some_and(|h| t >= h.t) {
+                continue;
+            }
+            let p = add(origin, scale(dir, t));
+            let normal = scale(sub(p, center), 1.0 / radius);
+            best = Some(Hit { t, point: p, normal, material, texel: 0, light: false });
+        }
+        best
+    }
+
+    /// True if nothing lies between `a` and `b`.
+    fn visible(&self, a: V3, b: V3) -> bool {
+        let d = sub(b, a);
+        let length = dot(d, d).sqrt();
+        self.hit(a, scale(d, 1.0 / length)).is_none_or(|h| h.t >= length - 1e-6)
+    }
+}
+
+/// How light and surfaces are painted: spectral or grey.
+pub trait Paint: Sync {
+    /// Per-path state: the wavelengths, or nothing.
+    type Path: Copy;
+    /// A radiance or throughput value.
+    type Value: Copy + Mul<Output = Self::Value> + Mul<f64, Output = Self::Value> + MulAssign + AddAssign;
+    /// A new path's state from its uniform number.
+    fn path(&self, u: f64) -> Self::Path;
+    /// One, and zero.
+    fn one(&self) -> Self::Value;
+    fn zero(&self) -> Self::Value;
+    /// The light's emission.
+    fn emission(&self, path: &Self::Path) -> Self::Value;
+    /// A material's albedo (at a texel, for the texture).
+    fn albedo(&self, path: &Self::Path, material: Material, texel: usize) -> Self::Value;
+    /// The chance that a path of throughput `beta` goes on.
+    fn survival(&self, path: &Self::Path, beta: Self::Value) -> f64;
+    /// The path's radiance as XYZ (an estimate).
+    fn xyz(&self, path: &Self::Path, radiance: Self::Value) -> Xyz;
+}
+
+/// A small, fast generator for the geometry (xorshift64*).
+#[derive(Clone, Copy, Debug)]
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// A uniform number in [0, 1).
+    pub fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+}
+
+/// A cosine-weighted direction about `n`.
+fn cosine(n: V3, rng: &mut Rng) -> V3 {
+    let (r, phi) = (rng.next().sqrt(), 2.0 * std::f64::consts::PI * rng.next());
+    let (x, y, z) = (r * phi.cos(), r * phi.sin(), (1.0 - r * r).max(0.0).sqrt());
+    let helper = if n[0].abs() > 0.5 { [0.0, 1.0, 0.0] } else { [1.0, 0.0, 0.0] };
+    let (t, b) = (normalize(cross(helper, n)), cross(n, normalize(cross(helper, n))));
+    add(add(scale(t, x), scale(b, y)), scale(n, z))
+}
+
+/// One camera path through `(x, y)` in [0, 1]² of the image: its XYZ and
+/// the number of surfaces it met.
+pub fn trace<P: Paint>(
+    scene: &Scene,
+    paint: &P,
+    path: &P::Path,
+    (x, y): (f64, f64),
+    rng: &mut Rng,
+) -> (Xyz, u32) {
+    let (origin, mut dir) = ([0.5, 0.5, 0.02], normalize([x - 0.5, 0.5 - y, 0.72]));
+    let mut origin = origin;
+    let (mut beta, mut radiance, mut vertices) = (paint.one(), paint.zero(), 0);
+    let emission = paint.emission(path);
+    for depth in 0..16 {
+        let Some(hit) = scene.hit(origin, dir) else { break };
+        vertices += 1;
+        if hit.light {
+            if depth == 0 {
+                radiance += beta * emission;
+            }
+            break;
+        }
+        let albedo = paint.albedo(path, hit.material, hit.texel);
+        let n = if dot(hit.normal, dir) > 0.0 { scale(hit.normal, -1.0) } else { hit.normal };
+        // Next-event estimation: a point on the light, if it sees this one.
+        let on_light = [
+            LIGHT_AT[0] + LIGHT_HALF * (2.0 * rng.next() - 1.0),
+            1.0,
+            LIGHT_AT[1] + LIGHT_HALF * (2.0 * rng.next() - 1.0),
+        ];
+        let to_light = sub(on_light, hit.point);
+        let d2 = dot(to_light, to_light);
+        let w = scale(to_light, 1.0 / d2.sqrt());
+        let (cos_surface, cos_light) = (dot(n, w), w[1]);
+        if cos_surface > 0.0 && cos_light > 0.0 && scene.visible(add(hit.point, scale(n, 1e-6)), on_light) {
+            let area = 4.0 * LIGHT_HALF * LIGHT_HALF;
+            let geometry = cos_surface * cos_light * area / (std::f64::consts::PI * d2);
+            radiance += beta * albedo * emission * geometry;
+        }
+        beta *= albedo;
+        if depth >= 2 {
+            let q = paint.survival(path, beta).clamp(0.05, 1.0);
+            if rng.next() >= q {
+                break;
+            }
+            beta = beta * (1.0 / q);
+        }
+        origin = add(hit.point, scale(n, 1e-6));
+        dir = cosine(n, rng);
+    }
+    (paint.xyz(path, radiance), vertices)
+}
