@@ -25,7 +25,8 @@ usage: compare [options]
   --light NAME | --light-file PATH      A, D65, F11, or a file (default D65)
   --surface NAME | --surface-file PATH  E2, F4, G4, H4, J4, A1, or a file (default A1)
   --n N          random and hero samples (default 100)
-  --m M          regular buckets, 1 to 64 (default 16)
+  --m M          regular buckets and fitted wavelengths, 1 to 64 (default 16)
+  --depth D      surfaces per path, 1 to 4: light × surface^D (default 1)
   --k K          hero width: 1, 2, 3, 4, 8 or 16 wavelengths (default 4)
   --seed S       seed of the single estimates and base seed of the trials (default 1)
   --trials T     trials for the RMS ΔE00 column (default 200)
@@ -63,6 +64,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("m") => s.m = parser.value()?.parse_with(common::buckets)?,
             Long("k") => s.k = parser.value()?.parse_with(common::hero_width)?,
             Long("seed") => s.seed = parser.value()?.parse()?,
+            Long("depth") => s.depth = parser.value()?.parse()?,
             Long("trials") => s.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
             Long("normalize") => s.viewing.normalize = parser.value()?.parse()?,
             Long("white-balance") => s.viewing.white_balance = true,

@@ -19,16 +19,17 @@ use speclab::Role;
 use speclab::sampling::strata::Strata;
 use speclab::study::StudyError;
 use speclab::study::sampling::{Pdf, Sampling};
-use speclab::study::scene::{self, Choice};
+use speclab::study::scene::{self, Choice, Depth};
 use speclab::study::{convergence, report};
 
 const USAGE: &str = "\
-usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--all] [--csv] [--summary]
+usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--depth D] [--all] [--csv] [--summary]
   --light NAME    A, D65 or F11 (default F11)
   --surface NAME  E2, F4, G4, H4, J4 or A1 (default A1)
   --light-file PATH, --surface-file PATH   a spectrum from a file instead
   --trials T      independent trials per row for random and hero (default 1000)
   --seed S        base seed (default 1)
+  --depth D       surfaces per path, 1 to 4: light × surface^D (default 1)
   --all           all 18 light × surface pairs
   --csv           machine-readable rows
   --summary       per light, the first n and M with RMS ΔE00 < 1 and < 0.5 for every patch,
@@ -42,6 +43,7 @@ struct Args {
     surface: Choice,
     trials: NonZeroUsize,
     seed: u64,
+    depth: Depth,
     all: bool,
     csv: bool,
     summary: bool,
@@ -56,6 +58,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         surface: Choice::Name("A1".into()),
         trials: NonZeroUsize::new(1000).unwrap_or(NonZeroUsize::MIN),
         seed: 1,
+        depth: Depth::ONE,
         all: false,
         csv: false,
         summary: false,
@@ -71,6 +74,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("surface-file") => a.surface = Choice::File(parser.value()?.into()),
             Long("trials") => a.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
             Long("seed") => a.seed = parser.value()?.parse()?,
+            Long("depth") => a.depth = parser.value()?.parse()?,
             Long("all") => a.all = true,
             Long("csv") => a.csv = true,
             Long("summary") => a.summary = true,
@@ -120,7 +124,15 @@ fn rows(args: &Args) -> Result<Vec<convergence::ConvergenceRow>, StudyError> {
     let mut rows = Vec::new();
     for light in &lights {
         for surface in &surfaces {
-            rows.extend(convergence::sequence(light, surface, &samplings(args), args.trials, args.seed)?);
+            let samplings = samplings(args);
+            rows.extend(convergence::sequence(
+                light,
+                surface,
+                &samplings,
+                args.depth,
+                args.trials,
+                args.seed,
+            )?);
         }
     }
     Ok(rows)

@@ -1,10 +1,12 @@
 //! The 6 × 3 comparison grid: every ColorChecker patch under every light,
-//! by the exact reference, random (K = 1), hero (K = 4) and regular buckets
-//! (centre and box), with each estimate's deviation from the reference.
+//! by the exact reference, random (K = 1), hero (K = 4), regular buckets
+//! (centre and box) and a rule of M wavelengths fitted to the light, with
+//! each estimate's deviation from the reference.
 //!
 //! ```text
 //! cargo run --release --example grid [-- --n 100 --m 16 --seed 1 --csv]
 //! cargo run --release --example grid -- --normalize luminance --white-balance
+//! cargo run --release --example grid -- --m 10 --depth 3
 //! ```
 
 mod common;
@@ -23,13 +25,16 @@ use speclab::study::scene::{Choice, Named};
 use speclab::study::texture::{self, TextureOptions};
 
 const USAGE: &str = "\
-usage: grid [--n N] [--m M] [--seed S] [--csv] [--texture] [--light-file PATH] [--surface-file PATH]
+usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture] [--light-file PATH] [--surface-file PATH]
             [--normalize none|power|luminance] [--white-balance]
             [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
             [--gamut clip|chroma]
   --n N                samples for random and hero (default 100)
-  --m M                buckets for regular sampling, 1 to 64 (default 16)
+  --m M                buckets for regular sampling, and wavelengths of the fitted rule,
+                       1 to 64 (default 16)
   --seed S             base seed of the random methods (default 1)
+  --depth D            surfaces per path, 1 to 4: every method and the reference on
+                       light × surface^D (default 1)
   --csv                print light,surface,method,samples,x,y,z,r,g,b,pdf,strata,evals rows
   --texture            instead, what an RGB texture of each surface costs in colour under each
                        light (its colour under D65, upsampled), beside hero (n, jittered) and
@@ -72,6 +77,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("n") => args.grid.n = parser.value()?.parse_with(|v| common::count("samples", v))?,
             Long("m") => args.grid.m = parser.value()?.parse_with(common::buckets)?,
             Long("seed") => args.grid.seed = parser.value()?.parse()?,
+            Long("depth") => args.grid.depth = parser.value()?.parse()?,
             Long("csv") => args.csv = true,
             Long("texture") => args.texture = true,
             Long("light-file") => args.lights = vec![Choice::File(parser.value()?.into())],

@@ -21,13 +21,15 @@ use speclab::study::report;
 use speclab::study::scene::{self, Choice, Named};
 
 const USAGE: &str = "\
-usage: plan --light NAME|all ... --surface NAME|all ... [--budget B] [--unbiased] [--trials T] [--seed S]
+usage: plan --light NAME|all ... --surface NAME|all ... [--budget B] [--unbiased] [--depth D]
+            [--trials T] [--seed S]
   --light NAME         A, D65, F11, or all; repeat for more lights
   --light-file PATH    a light from a file (brace, CSV/TSV or JSON); repeatable
   --surface NAME       E2, F4, G4, H4, J4, A1, or all; repeat for more surfaces
   --surface-file PATH  a reflectance from a file; repeatable
   --budget B           the largest acceptable RMS ΔE00 in any light × surface (default 1)
-  --unbiased           exclude biased methods (regular buckets)
+  --unbiased           exclude biased methods (regular buckets, fitted rules)
+  --depth D            surfaces per path, 1 to 4: light × surface^D (default 1)
   --trials T           trials per Monte Carlo light × surface (default 200)
   --seed S             base seed (default 1)";
 
@@ -64,6 +66,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
                 args.request.trials = parser.value()?.parse_with(|v| common::count("trials", v))?
             }
             Long("seed") => args.request.seed = parser.value()?.parse()?,
+            Long("depth") => args.request.depth = parser.value()?.parse()?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
                 std::process::exit(0);

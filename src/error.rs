@@ -77,6 +77,20 @@ pub enum Error {
     /// A light with no power where the observer sees, within 380–730 nm: no
     /// wavelength pdf can follow it.
     DarkLight,
+    /// A wavelength count outside what a fitted rule supports.
+    NodeCount {
+        /// The count asked for.
+        m: usize,
+        /// The largest count supported (the smallest is 1).
+        max: usize,
+    },
+    /// A fitted rule asked for as a value of another size.
+    RuleSize {
+        /// The rule's number of wavelengths.
+        rule: usize,
+        /// The size asked for.
+        asked: usize,
+    },
     /// A bin count outside what a binned pdf supports.
     BinCount {
         /// The count asked for.
@@ -135,6 +149,12 @@ impl fmt::Display for Error {
                 write!(f, "expected a hero width of {} wavelengths, found {k}", or_list(widths.iter()))
             }
             Error::BucketCount { m, max } => write!(f, "expected a bucket count from 1 to {max}, found {m}"),
+            Error::NodeCount { m, max } => {
+                write!(f, "expected a wavelength count from 1 to {max}, found {m}")
+            }
+            Error::RuleSize { rule, asked } => {
+                write!(f, "expected the rule's size, M = {rule}, found M = {asked}")
+            }
             Error::BinCount { bins, max } => write!(f, "expected a bin count from 1 to {max}, found {bins}"),
             Error::NoMass => {
                 write!(f, "expected a density with finite positive mass over 380-730 nm, found none")

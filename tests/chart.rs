@@ -12,7 +12,7 @@ use speclab::study::chart::{self, Point};
 use speclab::study::cost::{Config, Cost};
 use speclab::study::method::Method;
 use speclab::study::report;
-use speclab::study::scene::{builtin_lights, builtin_surfaces};
+use speclab::study::scene::{Depth, builtin_lights, builtin_surfaces};
 use speclab::study::trials;
 
 /// A made-up cost model: ns grow with the wavelengths looked at.
@@ -29,7 +29,7 @@ fn points() -> Vec<Point> {
     let trials = NonZeroUsize::new(2).unwrap();
     builtin_lights()
         .iter()
-        .flat_map(|l| chart::points_with_costs(l, surfaces, &methods, trials, 1, model).unwrap())
+        .flat_map(|l| chart::points_with_costs(l, surfaces, &methods, Depth::ONE, trials, 1, model).unwrap())
         .collect()
 }
 
@@ -78,7 +78,8 @@ fn worst_and_mean_are_over_the_surfaces() {
     let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
     let (f11, surfaces) = (&lights[2], &surfaces[..2]);
     let trials = NonZeroUsize::new(2).unwrap();
-    let points = chart::points_with_costs(f11, surfaces, &[Method::BOX], trials, 1, model).unwrap();
+    let points =
+        chart::points_with_costs(f11, surfaces, &[Method::BOX], Depth::ONE, trials, 1, model).unwrap();
     for p in &points[..8] {
         let rms: Vec<f64> = surfaces
             .iter()

@@ -49,6 +49,6 @@ fn study_choices() {
     use speclab::study::sampling::Pdf;
     round_trip(&Pdf::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
     round_trip(&Normalization::ALL, &["none", "power", "luminance"], "a normalisation");
-    let methods = ["reference", "random", "hero", "regular-center", "regular-box"];
+    let methods = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];
     round_trip(&Method::ALL, &methods, "a method");
 }

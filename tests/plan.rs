@@ -110,14 +110,20 @@ fn without_bias_no_bucket_is_chosen() {
 #[test]
 fn bad_requests_are_errors() {
     let (lights, surfaces) = (light("A"), builtin_surfaces());
-    let costs = model();
-    let plan = |l: &[Named], s: &[Named], r: &Request| plan::plan_with_costs(l, s, r, &costs);
+    let modelled = model();
+    let plan = |l: &[Named], s: &[Named], r: &Request| plan::plan_with_costs(l, s, r, &modelled);
     assert!(matches!(plan(&[], &surfaces, &Request::default()), Err(StudyError::EmptyScene)));
     assert!(matches!(plan(&lights, &[], &Request::default()), Err(StudyError::EmptyScene)));
     for budget in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         let err = plan(&lights, &surfaces, &Request { budget, ..Request::default() }).unwrap_err();
         assert!(matches!(err, StudyError::Budget { .. }), "{budget}: {err}");
         assert!(err.to_string().starts_with("expected a finite positive ΔE00 budget, found"), "{err}");
+    }
+    // A fixed rule beyond 64 wavelengths is refused, not looked up.
+    for method in [Method::BOX, Method::FITTED] {
+        let beyond = costs(&[(method, 65)]);
+        let err = plan::plan_with_costs(&lights, &surfaces, &Request::default(), &beyond).unwrap_err();
+        assert_eq!(err.to_string(), "expected a bucket count from 1 to 64, found 65");
     }
 }
 

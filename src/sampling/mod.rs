@@ -62,10 +62,14 @@
 
 pub mod binned;
 pub mod buckets;
+mod fit;
+mod fit_search;
+pub mod fitted;
 pub mod hero;
 mod light_pdf;
 pub mod pdf;
 mod prepared;
+pub mod prior;
 pub mod reference;
 pub mod regular;
 pub mod strata;

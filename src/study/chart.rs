@@ -3,8 +3,9 @@
 //! Pareto front of the two.
 //!
 //! The charted methods are [`curves`]: the assignment's random and hero,
-//! hero with each strata and with each pdf, centre and box buckets, and the
-//! reference as a single point. Random and hero run
+//! hero with each strata and with each pdf, centre and box buckets, the
+//! fitted rule, and the reference as a single point; on paths of any depth
+//! (light × surface^depth). Random and hero run
 //! n = 1, 2, 4, … [`CHART_MAX_N`]; buckets every M up to 64. The `chart`
 //! tool (`tools/src/bin/chart.rs`) draws the points; a method added to
 //! [`curves`] appears there unchanged. Costs are measured now
@@ -23,7 +24,7 @@ use crate::study::cost::{self, Config, Cost};
 use crate::study::error::StudyError;
 use crate::study::method::Method;
 use crate::study::sampling::{Pdf, Sampling};
-use crate::study::scene::Named;
+use crate::study::scene::{Depth, Named};
 use crate::study::trials;
 
 /// The largest n charted for random and hero.
@@ -31,7 +32,8 @@ pub const CHART_MAX_N: usize = 1024;
 
 /// The charted methods, one curve each (the reference is one point): the
 /// assignment's random, hero with every strata under the uniform pdf, hero
-/// with every other pdf under jittered numbers, and both bucket rules. A pdf
+/// with every other pdf under jittered numbers, both bucket rules, and the
+/// rule fitted to the light. A pdf
 /// or strata added to [`Pdf::ALL`] or [`Strata::ALL`] is charted with no
 /// change here.
 #[must_use]
@@ -40,7 +42,7 @@ pub fn curves() -> Vec<Method> {
     let mut out = vec![Method::Reference, Method::RANDOM];
     out.extend(Strata::ALL.map(|strata| hero(Pdf::Uniform, strata)));
     out.extend(Pdf::ALL.into_iter().filter(|&p| p != Pdf::Uniform).map(|pdf| hero(pdf, Strata::Jittered)));
-    out.extend([Method::CENTER, Method::BOX]);
+    out.extend([Method::CENTER, Method::BOX, Method::FITTED]);
     out
 }
 
@@ -75,7 +77,8 @@ pub struct Point {
 }
 
 /// Every configuration of `methods` under `light`, over `surfaces` (at
-/// least one), with `trials` trials per random point; Pareto flags set
+/// least one) to the power `depth`, with `trials` trials per random point
+/// (costs are measured at depth 1); Pareto flags set
 /// among the sampling methods. The reference is charted as a point but is
 /// not on the front: it is the yardstick (ΔE00 0 by definition), and it
 /// integrates one light × one surface exactly, which a path's product of
@@ -84,12 +87,13 @@ pub fn points(
     light: &Named,
     surfaces: &[Named],
     methods: &[Method],
+    depth: Depth,
     trials: NonZeroUsize,
     seed: u64,
 ) -> Result<Vec<Point>, StudyError> {
     let first = surfaces.first().ok_or(StudyError::EmptyScene)?;
     let measure = |config| cost::measure(config, &light.spectrum, &first.spectrum);
-    points_with_costs(light, surfaces, methods, trials, seed, measure)
+    points_with_costs(light, surfaces, methods, depth, trials, seed, measure)
 }
 
 /// [`points`] with each configuration's cost given by `cost` instead of
@@ -98,6 +102,7 @@ pub fn points_with_costs(
     light: &Named,
     surfaces: &[Named],
     methods: &[Method],
+    depth: Depth,
     trials: NonZeroUsize,
     seed: u64,
     mut cost: impl FnMut(Config) -> Result<Cost, StudyError>,
@@ -113,7 +118,8 @@ pub fn points_with_costs(
             let mut rms = Vec::with_capacity(surfaces.len());
             let mut ran = 1;
             for s in surfaces {
-                let stats = trials::method(&light.spectrum, &s.spectrum, method, config.count, trials, seed)?;
+                let (l, s) = (&light.spectrum, &s.spectrum);
+                let stats = trials::method_at_depth(l, s, depth, method, config.count, trials, seed)?;
                 ran = stats.trials;
                 rms.push(stats.rms_de00);
             }
@@ -186,8 +192,10 @@ mod tests {
     #[test]
     fn curves_and_counts() {
         let curves = curves();
-        // Reference, random, hero × every strata, hero × every other pdf, 2 bucket rules.
-        assert_eq!(curves.len(), 2 + Strata::ALL.len() + Pdf::ALL.len() - 1 + 2);
+        // Reference, random, hero × every strata, hero × every other pdf, 2
+        // bucket rules, fitted.
+        assert_eq!(curves.len(), 2 + Strata::ALL.len() + Pdf::ALL.len() - 1 + 3);
+        assert_eq!(curves.last(), Some(&Method::FITTED));
         for (i, a) in curves.iter().enumerate() {
             assert!(curves[i + 1..].iter().all(|b| b != a), "{a:?} twice");
         }
@@ -197,6 +205,7 @@ mod tests {
         }
         assert_eq!(chart_counts(Method::HERO), [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024]);
         assert_eq!(chart_counts(Method::BOX), (1..=64).collect::<Vec<_>>());
+        assert_eq!(chart_counts(Method::FITTED), (1..=64).collect::<Vec<_>>());
         assert_eq!(chart_counts(Method::Reference), [1]);
     }
 }

@@ -1,7 +1,8 @@
 //! The assignment's main user story: one light and one surface, the exact
 //! reference beside every technique, with sRGB, ΔE00 of one estimate and,
 //! over many trials, RMS ΔE00; and last, the surface as an RGB texture
-//! would store it (its colour under D65, upsampled), lit by the light.
+//! would store it (its colour under D65, upsampled), lit by the light. With
+//! a depth above 1, every line is light × surface^depth.
 //!
 //! ```
 //! use speclab::study::compare::{self, CompareOptions};
@@ -12,8 +13,9 @@
 //! let lines = compare::compare(&light, &patch, &CompareOptions::default())?;
 //! assert_eq!(lines[0].label, "reference");
 //! assert_eq!(lines[0].de00, 0.0);
-//! assert_eq!(lines.len(), 6);
-//! assert_eq!(lines[5].label, "rgb texture (D65)");
+//! assert_eq!(lines.len(), 7);
+//! assert_eq!(lines[5].label, "fitted M=16");
+//! assert_eq!(lines[6].label, "rgb texture (D65)");
 //! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
@@ -22,13 +24,12 @@ use std::num::NonZeroUsize;
 use crate::color::LinearSrgb;
 use crate::sampling::buckets::BucketRule;
 use crate::sampling::hero::USUAL_K;
-use crate::sampling::reference;
 use crate::study::error::StudyError;
 use crate::study::method::Method;
 use crate::study::perceptual;
 use crate::study::remarks::Viewing;
 use crate::study::sampling::Sampling;
-use crate::study::scene::Named;
+use crate::study::scene::{Depth, Named};
 use crate::study::{texture, trials};
 
 /// What to compare, and how.
@@ -36,7 +37,7 @@ use crate::study::{texture, trials};
 pub struct CompareOptions {
     /// Samples for random and hero.
     pub n: NonZeroUsize,
-    /// Buckets for the regular methods.
+    /// Buckets for the regular methods, and wavelengths of the fitted rule.
     pub m: NonZeroUsize,
     /// Hero width.
     pub k: usize,
@@ -48,14 +49,17 @@ pub struct CompareOptions {
     pub trials: NonZeroUsize,
     /// Normalisation (already applied to the light) and white balance.
     pub viewing: Viewing,
+    /// Surfaces per path.
+    pub depth: Depth,
 }
 
 impl Default for CompareOptions {
-    /// n = 100, M = 16, K = 4, seed 1, 200 trials, as Appendix 2.
+    /// n = 100, M = 16, K = 4, seed 1, 200 trials, depth 1, as Appendix 2.
     fn default() -> Self {
         let nz = |n| NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
         let (k, sampling, viewing) = (USUAL_K, Sampling::DEFAULT, Viewing::default());
-        CompareOptions { n: nz(100), m: nz(16), k, sampling, seed: 1, trials: nz(200), viewing }
+        let depth = Depth::ONE;
+        CompareOptions { n: nz(100), m: nz(16), k, sampling, seed: 1, trials: nz(200), viewing, depth }
     }
 }
 
@@ -74,7 +78,8 @@ pub struct Line {
     pub rms_de00: f64,
 }
 
-/// The reference, random, hero, centre and box lines for `light × surface`.
+/// The reference, random, hero, centre, box, fitted and texture lines for
+/// `light × surface`.
 pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec<Line>, StudyError> {
     let (l, r) = (&light.spectrum, &surface.spectrum);
     let techniques = [
@@ -83,11 +88,12 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
         (Method::Hero { k: s.k, sampling: s.sampling }, s.n, format!("hero n={} K={}", s.n, s.k)),
         (Method::Buckets { rule: BucketRule::Center }, s.m, format!("center M={}", s.m)),
         (Method::Buckets { rule: BucketRule::BoxAverage }, s.m, format!("box M={}", s.m)),
+        (Method::Fitted, s.m, format!("fitted M={}", s.m)),
     ];
     let white = s.viewing.white(l);
-    let exact = s.viewing.adapt(reference::xyz(l, r), l);
+    let exact = s.viewing.adapt(s.depth.exact(l, r), l);
     let (_, albedo, _) = texture::texture(surface)?;
-    let textured = s.viewing.adapt(reference::xyz(l, &albedo), l);
+    let textured = s.viewing.adapt(s.depth.exact(l, &albedo), l);
     let de00 = perceptual::delta_e00(textured, exact, white);
     let texture_line = Line {
         label: "rgb texture (D65)".into(),
@@ -99,7 +105,7 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
     let lines: Result<Vec<Line>, StudyError> = techniques
         .into_iter()
         .map(|(method, count, label)| {
-            let prepared = method.prepare(l)?;
+            let prepared = method.prepare(l)?.at_depth(s.depth);
             let estimate = |seed| prepared.xyz(r, count, seed).map(|x| s.viewing.adapt(x, l));
             let xyz = estimate(s.seed)?;
             let t = if method.is_random() { s.trials } else { NonZeroUsize::MIN };

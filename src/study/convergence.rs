@@ -2,8 +2,8 @@
 //! over many trials, and where each crosses an error threshold.
 //!
 //! Random and hero use n = 1, 2, 4, … [`CONVERGENCE_MAX_N`] (powers of
-//! two), once for each pdf × strata asked for; regular buckets every M from
-//! 1 to 64 ([`Method::counts`]). [`crossing`] reads, per light and method,
+//! two), once for each pdf × strata asked for; regular buckets and fitted
+//! rules every M from 1 to 64 ([`Method::counts`]); on paths of any depth. [`crossing`] reads, per light and method,
 //! the worst RMS ΔE00 over the light's surfaces at each count, and reports
 //! the first count below a threshold and the count from which it stays
 //! below.
@@ -11,13 +11,13 @@
 //! ```
 //! use std::num::NonZeroUsize;
 //! use speclab::study::convergence::{self, CONVERGENCE_MAX_N};
-//! use speclab::study::{method::Method, sampling::Sampling, scene::Choice};
+//! use speclab::study::{method::Method, sampling::Sampling, scene::{Choice, Depth}};
 //! use speclab::Role;
 //! let light = Choice::Name("D65".into()).resolve(Role::Light)?;
 //! let patch = Choice::Name("A1".into()).resolve(Role::Reflectance)?;
-//! let rows = convergence::sequence(&light, &patch, &[Sampling::DEFAULT], NonZeroUsize::new(20).unwrap(), 1)?;
+//! let rows = convergence::sequence(&light, &patch, &[Sampling::DEFAULT], Depth::ONE, NonZeroUsize::new(20).unwrap(), 1)?;
 //! let counts = |m: Method| m.counts(CONVERGENCE_MAX_N).len();
-//! assert_eq!(rows.len(), 2 * counts(Method::RANDOM) + 2 * counts(Method::BOX));
+//! assert_eq!(rows.len(), 2 * counts(Method::RANDOM) + 2 * counts(Method::BOX) + counts(Method::FITTED));
 //! let boxed = convergence::crossing(&rows, "D65", Method::BOX, 1.0);
 //! assert!(boxed.first.is_some() && boxed.stable >= boxed.first);
 //! # Ok::<(), speclab::study::StudyError>(())
@@ -28,18 +28,18 @@ use std::num::NonZeroUsize;
 use crate::study::error::StudyError;
 use crate::study::method::Method;
 use crate::study::sampling::Sampling;
-use crate::study::scene::Named;
+use crate::study::scene::{Depth, Named};
 use crate::study::threshold::{self, Crossing};
 use crate::study::trials::{self, Stats};
 
 /// The methods a sequence studies with `samplings`, in order: random and
-/// hero with each sampling, then centre and box buckets.
+/// hero with each sampling, then centre and box buckets and the fitted rule.
 #[must_use]
 pub fn methods(samplings: &[Sampling]) -> Vec<Method> {
     let random = [Method::RANDOM, Method::HERO];
     let mut out: Vec<Method> =
         random.iter().flat_map(|m| samplings.iter().map(|&s| m.with_sampling(s))).collect();
-    out.extend([Method::CENTER, Method::BOX]);
+    out.extend([Method::CENTER, Method::BOX, Method::FITTED]);
     out
 }
 
@@ -62,12 +62,13 @@ pub struct ConvergenceRow {
 }
 
 /// Every method of [`methods`] at every count it studies
-/// ([`Method::counts`] up to [`CONVERGENCE_MAX_N`]), on `light × surface`,
-/// with `trials` trials per random row.
+/// ([`Method::counts`] up to [`CONVERGENCE_MAX_N`]), on `light × surface`
+/// (to the power `depth`), with `trials` trials per random row.
 pub fn sequence(
     light: &Named,
     surface: &Named,
     samplings: &[Sampling],
+    depth: Depth,
     trials: NonZeroUsize,
     seed: u64,
 ) -> Result<Vec<ConvergenceRow>, StudyError> {
@@ -75,7 +76,8 @@ pub fn sequence(
     for method in methods(samplings) {
         for samples in method.counts(CONVERGENCE_MAX_N) {
             let n = NonZeroUsize::new(samples).unwrap_or(NonZeroUsize::MIN);
-            let stats = trials::method(&light.spectrum, &surface.spectrum, method, n, trials, seed)?;
+            let (l, s) = (&light.spectrum, &surface.spectrum);
+            let stats = trials::method_at_depth(l, s, depth, method, n, trials, seed)?;
             let (light, surface) = (light.name.clone(), surface.name.clone());
             rows.push(ConvergenceRow { light, surface, method, samples, stats });
         }

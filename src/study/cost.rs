@@ -32,6 +32,7 @@ use rand::rngs::StdRng;
 use crate::sampling::buckets::Buckets;
 use crate::spectrum::TabulatedSpectrum;
 use crate::study::error::StudyError;
+use crate::study::fits;
 use crate::study::method::Method;
 
 /// A method with its sample count n or bucket count M.
@@ -56,7 +57,7 @@ impl fmt::Display for Config {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.method {
             Method::Reference => write!(f, "reference"),
-            Method::Buckets { .. } => write!(f, "{} M={}", self.method, self.count),
+            Method::Buckets { .. } | Method::Fitted => write!(f, "{} M={}", self.method, self.count),
             m => {
                 let sampling = m.sampling().unwrap_or_default();
                 write!(f, "{m} {sampling} n={}", self.count)
@@ -82,6 +83,9 @@ pub fn measure(
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
 ) -> Result<Cost, StudyError> {
+    if config.method == Method::Fitted {
+        return fitted(config.count.get(), light, surface);
+    }
     let Method::Buckets { rule } = config.method else {
         let method = config.method;
         let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
@@ -100,6 +104,25 @@ pub fn measure(
     });
     let per_estimate_ns = median_ns(|| {
         black_box(buckets.xyz_of_product(&[black_box(&l), black_box(&s)]));
+    });
+    Ok(Cost { per_estimate_ns, preparation_ns })
+}
+
+/// The cost of a fitted rule of `m` wavelengths: preparation evaluates the
+/// light and the surface at its wavelengths (the fit itself is once per
+/// scene's lights, tens of milliseconds, and not counted); an estimate
+/// multiplies and weights the stored values.
+fn fitted(m: usize, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Result<Cost, StudyError> {
+    let fits = fits::for_lights(&[light])?;
+    let rule = fits.rule(m)?;
+    let (mut l, mut s) = (vec![0.0; rule.m()], vec![0.0; rule.m()]);
+    let preparation_ns = median_ns(|| {
+        rule.values_into(black_box(light), &mut l);
+        rule.values_into(black_box(surface), &mut s);
+        black_box((&l, &s));
+    });
+    let per_estimate_ns = median_ns(|| {
+        black_box(rule.xyz_of_factors(&[black_box(&l), black_box(&s)]));
     });
     Ok(Cost { per_estimate_ns, preparation_ns })
 }

@@ -27,6 +27,11 @@ pub enum StudyError {
         /// The budget given.
         value: f64,
     },
+    /// A path depth outside 1 ..= `MAX_DEPTH`.
+    Depth {
+        /// What was given.
+        found: String,
+    },
 }
 
 impl fmt::Display for StudyError {
@@ -38,6 +43,13 @@ impl fmt::Display for StudyError {
             }
             StudyError::Budget { value } => {
                 write!(f, "expected a finite positive ΔE00 budget, found {value}")
+            }
+            StudyError::Depth { found } => {
+                write!(
+                    f,
+                    "expected a path depth from 1 to {}, found {found:?}",
+                    crate::study::scene::MAX_DEPTH
+                )
             }
         }
     }

@@ -1,7 +1,9 @@
 //! The comparison grid: every light × surface by every method.
 //!
 //! This is the computation behind `examples/grid.rs`, kept in the library so
-//! that tests and other programs get the same numbers. Cell `c` (in row-major
+//! that tests and other programs get the same numbers. Paths may be deeper
+//! than one bounce ([`GridOptions::depth`]): every method, the reference
+//! included, then works on light × surface^depth. Cell `c` (in row-major
 //! order over lights, then surfaces) draws its random methods from
 //! `derive_seed(seed, 2c)` (random) and `derive_seed(seed, 2c + 1)` (hero).
 //!
@@ -10,7 +12,7 @@
 //! use speclab::study::scene::{builtin_lights, builtin_surfaces};
 //! let (lights, surfaces) = (builtin_lights(), builtin_surfaces());
 //! let rows = GridOptions::default().rows(&lights, &surfaces)?;
-//! assert_eq!(rows.len(), 18 * 5);
+//! assert_eq!(rows.len(), 18 * 6);
 //! assert_eq!(rows[5].light.name, "A");
 //! # Ok::<(), speclab::study::StudyError>(())
 //! ```
@@ -21,29 +23,32 @@ use crate::color::Xyz;
 use crate::study::error::StudyError;
 use crate::study::method::{Method, derive_seed};
 use crate::study::sampling::Sampling;
-use crate::study::scene::Named;
+use crate::study::scene::{Depth, Named};
 
 /// What a grid run computes: its counts, seed and sampling.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct GridOptions {
     /// Samples n for random and hero.
     pub n: NonZeroUsize,
-    /// Buckets M for the regular methods.
+    /// Buckets M for the regular methods, and wavelengths of the fitted rule.
     pub m: NonZeroUsize,
     /// Base seed.
     pub seed: u64,
     /// The random and hero methods' pdf and strata.
     pub sampling: Sampling,
+    /// Surfaces per path (1: light × surface).
+    pub depth: Depth,
 }
 
 impl Default for GridOptions {
-    /// n = 100, M = 16, seed 1, uniform and independent wavelengths.
+    /// n = 100, M = 16, seed 1, uniform and independent wavelengths, depth 1.
     fn default() -> Self {
         GridOptions {
             n: NonZeroUsize::new(100).unwrap_or(NonZeroUsize::MIN),
             m: NonZeroUsize::new(16).unwrap_or(NonZeroUsize::MIN),
             seed: 1,
             sampling: Sampling::DEFAULT,
+            depth: Depth::ONE,
         }
     }
 }
@@ -75,8 +80,10 @@ impl GridOptions {
         let methods = Method::ALL.map(|m| m.with_sampling(self.sampling));
         let mut cell = 0u64;
         for light in lights {
-            let prepared: Vec<_> =
-                methods.iter().map(|m| m.prepare(&light.spectrum)).collect::<Result<_, _>>()?;
+            let prepared: Vec<_> = methods
+                .iter()
+                .map(|m| m.prepare(&light.spectrum).map(|p| p.at_depth(self.depth)))
+                .collect::<Result<_, _>>()?;
             for surface in surfaces {
                 for (&method, prepared) in methods.iter().zip(&prepared) {
                     let (samples, seed) = match method {

@@ -7,13 +7,22 @@
 //! | `hero` | n × K (hero + K − 1 rotations; K = 4 by default) | n |
 //! | `regular-center` | M bucket centers | M |
 //! | `regular-box` | M bucket means | M |
+//! | `fitted` | M wavelengths fitted to the light ([`FittedRule`]) | M |
 //!
 //! Random and hero draw their wavelengths as their [`Sampling`] says (a pdf
 //! and a strata; uniform and independent by default, as the assignment).
 //! They draw from `StdRng::seed_from_u64(seed)`, so a seed fixes the
 //! result. Use [`derive_seed`] to give independent runs their own seeds.
 //! Buckets take any M from 1 to [`MAX_BUCKETS`] at run time
-//! ([`Buckets`]), with the same numbers as `RegularSpectrum<M>`.
+//! ([`Buckets`]), with the same numbers as `RegularSpectrum<M>`; fitted
+//! rules any M up to [`MAX_NODES`], fitted to the prepared light once per
+//! process ([`crate::study::fits`]).
+//!
+//! Every method estimates a path of any [`Depth`]: light × surface^depth.
+//! Random and hero sample the product at their wavelengths; buckets
+//! multiply the surface's bucket values `depth` times, as a renderer that
+//! buckets each spectrum once would; a fitted rule weights the product at
+//! its wavelengths; the reference integrates the product exactly.
 //!
 //! ```
 //! use std::num::NonZeroUsize;
@@ -36,12 +45,15 @@ use rand::{Rng, SeedableRng};
 use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
+use crate::sampling::fitted::{FittedRule, MAX_NODES};
 use crate::sampling::hero::{self, USUAL_K};
 use crate::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 use crate::sampling::reference;
-use crate::spectrum::TabulatedSpectrum;
+use crate::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::study::error::StudyError;
+use crate::study::fits::{self, Fits};
 use crate::study::sampling::{Pdf, Sampling};
+use crate::study::scene::Depth;
 
 /// How wavelengths are chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -66,6 +78,8 @@ pub enum Method {
         /// Center samples or box means.
         rule: BucketRule,
     },
+    /// M wavelengths and weights fitted to the light ([`FittedRule`]).
+    Fitted,
 }
 
 impl Method {
@@ -81,9 +95,19 @@ impl Method {
     /// Box buckets.
     pub const BOX: Method = Method::Buckets { rule: BucketRule::BoxAverage };
 
-    /// The assignment's five methods, reference first.
-    pub const ALL: [Method; 5] =
-        [Method::Reference, Method::RANDOM, Method::HERO, Method::CENTER, Method::BOX];
+    /// A fitted rule.
+    pub const FITTED: Method = Method::Fitted;
+
+    /// The assignment's five methods, reference first, and the fitted rule.
+    pub const ALL: [Method; 6] =
+        [Method::Reference, Method::RANDOM, Method::HERO, Method::CENTER, Method::BOX, Method::FITTED];
+
+    /// True for the methods with a fixed set of M wavelengths (buckets and
+    /// fitted rules): deterministic and biased.
+    #[must_use]
+    pub fn is_fixed(self) -> bool {
+        matches!(self, Method::Buckets { .. } | Method::Fitted)
+    }
 
     /// The same method drawing wavelengths as `sampling` says (no change
     /// for the deterministic methods).
@@ -128,8 +152,8 @@ impl Method {
     }
 
     /// The counts a sequence studies: powers of two up to `max_n` for
-    /// random and hero, every M up to [`MAX_BUCKETS`] for buckets, none for
-    /// the reference.
+    /// random and hero, every M up to [`MAX_BUCKETS`] for buckets and
+    /// [`MAX_NODES`] for fitted rules, none for the reference.
     #[must_use]
     pub fn counts(self, max_n: usize) -> Vec<usize> {
         match self {
@@ -139,18 +163,20 @@ impl Method {
                     .collect()
             }
             Method::Buckets { .. } => (1..=MAX_BUCKETS).collect(),
+            Method::Fitted => (1..=MAX_NODES).collect(),
             Method::Reference => Vec::new(),
         }
     }
 
-    /// This method ready for `light`: its pdf table built once (see
-    /// [`Prepared::xyz`]).
+    /// This method ready for `light` at depth 1: its pdf table built once,
+    /// or its fitted rules found (see [`Prepared::xyz`]).
     pub fn prepare(self, light: &TabulatedSpectrum) -> Result<Prepared<'_>, StudyError> {
         let table = match self.sampling() {
             Some(s) => s.pdf.table(light)?,
             None => None,
         };
-        Ok(Prepared { method: self, light, table })
+        let fits = if self == Method::Fitted { Some(fits::for_lights(&[light])?) } else { None };
+        Ok(Prepared { method: self, light, table, fits, depth: Depth::ONE })
     }
 
     /// XYZ of `light × surface` by this method with `samples` samples or
@@ -179,6 +205,7 @@ impl fmt::Display for Method {
             Method::Hero { .. } => "hero",
             Method::Buckets { rule: BucketRule::Center } => "regular-center",
             Method::Buckets { rule: BucketRule::BoxAverage } => "regular-box",
+            Method::Fitted => "fitted",
         })
     }
 }
@@ -190,21 +217,39 @@ impl FromStr for Method {
         let found = Method::ALL.into_iter().find(|m| m.to_string().eq_ignore_ascii_case(name));
         found.ok_or_else(|| Error::UnknownName {
             what: "a method",
-            expected: &["reference", "random", "hero", "regular-center", "regular-box"],
+            expected: &["reference", "random", "hero", "regular-center", "regular-box", "fitted"],
             found: name.to_string(),
         })
     }
 }
 
-/// A method with its pdf table built for one light.
+/// A method with its pdf table built, or its rules found, for one light,
+/// and the depth of the paths it estimates.
 #[derive(Clone, Debug)]
 pub struct Prepared<'a> {
     method: Method,
     light: &'a TabulatedSpectrum,
     table: Option<LightPdf>,
+    fits: Option<std::sync::Arc<Fits>>,
+    depth: Depth,
 }
 
 impl Prepared<'_> {
+    /// The same, estimating paths of `depth` surfaces.
+    #[must_use]
+    pub fn at_depth(mut self, depth: Depth) -> Self {
+        self.depth = depth;
+        self
+    }
+
+    /// The fitted rule of `m` wavelengths, for a fitted method.
+    pub fn rule(&self, m: usize) -> Result<Option<&FittedRule>, StudyError> {
+        Ok(match &self.fits {
+            Some(f) => Some(f.rule(m)?),
+            None => None,
+        })
+    }
+
     /// XYZ of the light × `surface` with `samples` samples or buckets, the
     /// random methods seeded with `seed`.
     pub fn xyz(
@@ -242,6 +287,9 @@ impl Prepared<'_> {
                 }
             };
         }
+        if self.depth != Depth::ONE {
+            return self.at_depth_with_rng(surface, samples, rng);
+        }
         Ok(match self.method {
             Method::Reference => reference::xyz(light, surface),
             Method::Random { sampling } => with_pdf!(sampling.pdf, |pdf| Ok::<_, Error>(
@@ -257,7 +305,46 @@ impl Prepared<'_> {
                 rng
             ))?,
             Method::Buckets { rule } => Buckets::new(samples.get(), rule)?.xyz(light, surface),
+            Method::Fitted => self.fitted(samples.get())?.xyz_of_product(&[light, surface]),
         })
+    }
+
+    /// [`Prepared::xyz_with_rng`] for a path of [`Prepared::at_depth`]'s
+    /// depth, more than one surface.
+    fn at_depth_with_rng<R: Rng + ?Sized>(
+        &self,
+        surface: &TabulatedSpectrum,
+        samples: NonZeroUsize,
+        rng: &mut R,
+    ) -> Result<Xyz, StudyError> {
+        let (light, depth) = (self.light, self.depth);
+        let path = depth.path(surface);
+        let mut factors: Vec<&dyn Spectrum> = vec![light];
+        factors.extend_from_slice(path.factors());
+        Ok(match self.method {
+            Method::Reference => depth.exact(light, surface),
+            Method::Random { .. } | Method::Hero { .. } => {
+                let (k, sampling) = match self.method {
+                    Method::Hero { k, sampling } => (k, sampling),
+                    _ => (1, self.method.sampling().unwrap_or_default()),
+                };
+                let pdf = self.pdf().ok_or(Error::DarkLight)?;
+                hero::estimate_dyn(k, light, &path, samples, pdf, sampling.strata, rng)?
+            }
+            Method::Buckets { rule } => {
+                let buckets = Buckets::new(samples.get(), rule)?;
+                let (l, s) = (buckets.values(light), buckets.values(surface));
+                let mut values: Vec<&[f64]> = vec![&l];
+                values.extend(std::iter::repeat_n(&s[..], depth.get()));
+                buckets.xyz_of_product(&values)
+            }
+            Method::Fitted => self.fitted(samples.get())?.xyz_of_product(&factors),
+        })
+    }
+
+    /// The fitted rule of `m` wavelengths (an error for other methods).
+    fn fitted(&self, m: usize) -> Result<&FittedRule, StudyError> {
+        self.rule(m)?.ok_or(StudyError::Spectra(Error::NodeCount { m, max: MAX_NODES }))
     }
 
     /// The method's density for the light, if it draws wavelengths: for

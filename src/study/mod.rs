@@ -2,8 +2,10 @@
 //! sampling wavelengths lands from the exact reference, perceptually.
 //!
 //! - [`scene`]: lights and surfaces, built-in or from files, named.
-//! - [`method`]: the five methods (reference, random, hero, center and box
-//!   buckets) behind one call; [`sampling`]: the random methods' pdf and
+//! - [`method`]: the six methods (reference, random, hero, center and box
+//!   buckets, fitted rules) behind one call, at any path depth
+//!   ([`scene::Depth`]); [`fits`]: the fitted rules, fitted once per set
+//!   of lights; [`sampling`]: the random methods' pdf and
 //!   strata.
 //! - [`grid`]: every light × surface by every method (Appendix 2's layout).
 //! - [`trials`]: T independent estimates of a method: bias, spread, RMS and
@@ -17,6 +19,9 @@
 //! - [`cost`]: the measured cost of one estimate; [`chart`]: speed against
 //!   accuracy and its Pareto front; [`plan`]: the cheapest configuration
 //!   within a scene's ΔE00 budget.
+//! - [`rules`]: the fixed rules (fitted, centre, box) side by side by M
+//!   and by path depth; [`shapes`]: named reflectances outside the fitted
+//!   rules' prior, to judge them on.
 //! - [`texture`]: what RGB texturing costs in colour under each light,
 //!   beside the sampling errors.
 //! - [`report`]: tables and CSV.
@@ -42,6 +47,7 @@ pub mod compare;
 pub mod convergence;
 pub mod cost;
 mod error;
+pub mod fits;
 pub mod font;
 pub mod grid;
 pub mod method;
@@ -49,8 +55,10 @@ pub mod perceptual;
 pub mod plan;
 pub mod remarks;
 pub mod report;
+pub mod rules;
 pub mod sampling;
 pub mod scene;
+pub mod shapes;
 pub mod sheet;
 pub mod swatches;
 pub mod texture;

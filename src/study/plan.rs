@@ -3,13 +3,18 @@
 //! within a budget, stably.
 //!
 //! - **Candidates**: random and hero with every pdf × strata, n = 1, 2, 4,
-//!   … 4096; and, where bias is allowed, centre and box buckets, M = 1 … 64.
+//!   … 4096; and, where bias is allowed, centre and box buckets and the
+//!   rule fitted to the scene's lights (all of them at once), M = 1 … 64.
 //!   The reference is the yardstick, not a candidate: a renderer cannot
 //!   integrate each path exactly.
 //! - **Cost**: [`crate::study::cost`], on the first light × first surface.
-//! - **Buckets** are deterministic: within budget *stably* means within
-//!   budget at M and at every larger M up to 64 (under F11, box M = 22 is
-//!   below ΔE00 1 but M = 23–25 are not: 22 is luck).
+//! - **Buckets** and **fitted rules** are deterministic: within budget
+//!   *stably* means within budget at M and at every larger M up to 64
+//!   (under F11, box M = 22 is below ΔE00 1 but M = 23–25 are not: 22 is
+//!   luck).
+//! - **Depth**: every cell is light × surface^depth ([`Request::depth`]);
+//!   costs are measured at depth 1 (a deeper path adds one multiplication
+//!   per bounce to every method alike).
 //! - **Monte Carlo** methods: within budget if, in every cell, the upper end
 //!   of a 95 % confidence interval of the RMS ΔE00 over the trials is. A
 //!   cell is first screened with a tenth of the trials: a clear failure
@@ -32,15 +37,19 @@
 use std::num::NonZeroUsize;
 
 use crate::color::Xyz;
+use crate::error::Error;
 use crate::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
+use crate::sampling::fitted::MAX_NODES;
 use crate::sampling::reference;
+use crate::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::study::convergence::CONVERGENCE_MAX_N;
 use crate::study::cost::{self, Config, Cost};
 use crate::study::error::StudyError;
+use crate::study::fits;
 use crate::study::method::{Method, derive_seed};
 use crate::study::perceptual;
 use crate::study::sampling::Sampling;
-use crate::study::scene::Named;
+use crate::study::scene::{Depth, Named};
 use crate::study::trials::{self, Stats};
 
 /// What the plan must meet.
@@ -54,6 +63,8 @@ pub struct Request {
     pub trials: NonZeroUsize,
     /// Base seed (default 1).
     pub seed: u64,
+    /// Surfaces per path (default 1).
+    pub depth: Depth,
 }
 
 impl Default for Request {
@@ -63,6 +74,7 @@ impl Default for Request {
             allow_bias: true,
             trials: NonZeroUsize::new(200).unwrap_or(NonZeroUsize::MIN),
             seed: 1,
+            depth: Depth::ONE,
         }
     }
 }
@@ -84,7 +96,7 @@ pub enum Verdict {
         /// The cell, `light × surface`.
         cell: String,
     },
-    /// Within budget at M, but not at the larger `m` (buckets).
+    /// Within budget at M, but not at the larger `m` (buckets, fitted).
     Unstable {
         /// The worst RMS ΔE00 at M.
         worst: f64,
@@ -159,17 +171,29 @@ pub fn plan_with_costs(
     costs: &[(Config, Cost)],
 ) -> Result<Plan, StudyError> {
     validate(lights, surfaces, request)?;
-    let scene = Scene::new(lights, surfaces);
+    let scene = Scene::new(lights, surfaces, request.depth);
     let mut candidates = costs.to_vec();
     candidates.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
     let (center, boxed) =
         (scene.bucket_errors(BucketRule::Center)?, scene.bucket_errors(BucketRule::BoxAverage)?);
+    // Fitted rules are fitted (every M) only if one is tried.
+    let mut fitted: Option<Vec<(f64, String)>> = None;
     let mut plan = Plan { chosen: None, runners_up: Vec::new(), others: Vec::new() };
     for (config, cost) in candidates {
+        let m = config.count.get();
+        if config.method.is_fixed() && m > MAX_BUCKETS.min(MAX_NODES) {
+            return Err(Error::BucketCount { m, max: MAX_BUCKETS.min(MAX_NODES) }.into());
+        }
         let done = plan.runners_up.len() == 3;
         let verdict = match config.method {
             _ if done => Verdict::NotTried,
-            Method::Buckets { .. } if !request.allow_bias => Verdict::Biased,
+            m if m.is_fixed() && !request.allow_bias => Verdict::Biased,
+            Method::Fitted => {
+                if fitted.is_none() {
+                    fitted = Some(scene.fitted_errors(lights)?);
+                }
+                bucket_verdict(fitted.as_deref().unwrap_or_default(), config.count.get(), request.budget)
+            }
             Method::Buckets { rule: BucketRule::Center } => {
                 bucket_verdict(&center, config.count.get(), request.budget)
             }
@@ -197,13 +221,14 @@ fn configs() -> Vec<Config> {
         .flat_map(|s| random.map(|m| m.with_sampling(s)))
         .flat_map(|m| m.counts(CONVERGENCE_MAX_N).into_iter().map(move |n| Config::new(m, count(n))))
         .collect();
-    for method in [Method::CENTER, Method::BOX] {
+    for method in [Method::CENTER, Method::BOX, Method::FITTED] {
         out.extend(method.counts(CONVERGENCE_MAX_N).into_iter().map(|m| Config::new(method, count(m))));
     }
     out
 }
 
-/// The verdict for M buckets from the worst ΔE00 at every M (index M − 1).
+/// The verdict for M buckets (or fitted wavelengths) from the worst ΔE00
+/// at every M (index M − 1).
 fn bucket_verdict(worst: &[(f64, String)], m: usize, budget: f64) -> Verdict {
     let (at, cell) = worst[m - 1].clone();
     if at > budget {
@@ -215,31 +240,37 @@ fn bucket_verdict(worst: &[(f64, String)], m: usize, budget: f64) -> Verdict {
     }
 }
 
-/// The scene's cells with their references and whites.
+/// The scene's cells with their references (at the scene's depth) and
+/// whites.
 struct Scene<'a> {
     cells: Vec<(&'a Named, &'a Named, Xyz, Xyz)>,
+    depth: Depth,
 }
 
 impl<'a> Scene<'a> {
-    fn new(lights: &'a [Named], surfaces: &'a [Named]) -> Self {
+    fn new(lights: &'a [Named], surfaces: &'a [Named], depth: Depth) -> Self {
         let cells = lights
             .iter()
             .flat_map(|l| {
                 let white = reference::white(&l.spectrum);
-                surfaces.iter().map(move |s| (l, s, reference::xyz(&l.spectrum, &s.spectrum), white))
+                surfaces.iter().map(move |s| (l, s, depth.exact(&l.spectrum, &s.spectrum), white))
             })
             .collect();
-        Scene { cells }
+        Scene { cells, depth }
     }
 
-    /// For M = 1 … 64, the worst ΔE00 over the cells and where it is.
-    fn bucket_errors(&self, rule: BucketRule) -> Result<Vec<(f64, String)>, StudyError> {
-        (1..=MAX_BUCKETS)
+    /// For M = 1 … 64, the worst ΔE00 over the cells of `estimate(M, light,
+    /// surface)` and where it is.
+    fn worst_by_m(
+        &self,
+        max: usize,
+        mut estimate: impl FnMut(usize, &Named, &Named) -> Result<Xyz, StudyError>,
+    ) -> Result<Vec<(f64, String)>, StudyError> {
+        (1..=max)
             .map(|m| {
-                let buckets = Buckets::new(m, rule)?;
                 let mut worst = (f64::NEG_INFINITY, String::new());
                 for (l, s, exact, white) in &self.cells {
-                    let de = perceptual::delta_e00(buckets.xyz(&l.spectrum, &s.spectrum), *exact, *white);
+                    let de = perceptual::delta_e00(estimate(m, l, s)?, *exact, *white);
                     if de > worst.0 {
                         worst = (de, format!("{} × {}", l.name, s.name));
                     }
@@ -247,6 +278,31 @@ impl<'a> Scene<'a> {
                 Ok(worst)
             })
             .collect()
+    }
+
+    /// For M = 1 … 64 buckets under `rule`, the worst ΔE00 and where.
+    fn bucket_errors(&self, rule: BucketRule) -> Result<Vec<(f64, String)>, StudyError> {
+        let depth = self.depth.get();
+        self.worst_by_m(MAX_BUCKETS, |m, l, s| {
+            let buckets = Buckets::new(m, rule)?;
+            let (lv, sv) = (buckets.values(&l.spectrum), buckets.values(&s.spectrum));
+            let mut factors: Vec<&[f64]> = vec![&lv];
+            factors.extend(std::iter::repeat_n(&sv[..], depth));
+            Ok(buckets.xyz_of_product(&factors))
+        })
+    }
+
+    /// For M = 1 … 64, the worst ΔE00 of the rule fitted to all of
+    /// `lights` at once, and where.
+    fn fitted_errors(&self, lights: &[Named]) -> Result<Vec<(f64, String)>, StudyError> {
+        let spectra: Vec<&TabulatedSpectrum> = lights.iter().map(|l| &l.spectrum).collect();
+        let fits = fits::for_lights(&spectra)?;
+        self.worst_by_m(MAX_NODES, |m, l, s| {
+            let path = self.depth.path(&s.spectrum);
+            let mut factors: Vec<&dyn Spectrum> = vec![&l.spectrum];
+            factors.extend_from_slice(path.factors());
+            Ok(fits.rule(m)?.xyz_of_product(&factors))
+        })
     }
 
     /// Screens every cell with a tenth of the trials, then runs them all;
@@ -257,7 +313,7 @@ impl<'a> Scene<'a> {
         let stages = [screen.min(request.trials), request.trials];
         let mut prepared = Vec::with_capacity(self.cells.len());
         for (l, ..) in &self.cells {
-            prepared.push(config.method.prepare(&l.spectrum)?);
+            prepared.push(config.method.prepare(&l.spectrum)?.at_depth(self.depth));
         }
         let names: Vec<String> =
             self.cells.iter().map(|(l, s, ..)| format!("{} × {}", l.name, s.name)).collect();

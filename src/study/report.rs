@@ -19,9 +19,11 @@ use std::io::{self, Write};
 
 mod chart;
 mod plan;
+mod rules;
 mod texture;
 pub use chart::chart_csv;
 pub use plan::plan_text;
+pub use rules::{depth_table, rules_table};
 pub use texture::texture_table;
 
 use crate::color::display::{Display, Exposure, GamutMap, Srgb8};
@@ -32,6 +34,7 @@ use crate::study::grid::{GridOptions, GridRow};
 use crate::study::method::Method;
 use crate::study::perceptual;
 use crate::study::remarks::Viewing;
+use crate::study::scene::Depth;
 
 /// Grid rows as CSV: `light,surface,method,samples,x,y,z,r,g,b`, then
 /// `pdf,strata,evals`; full f64 precision, colours white-balanced if
@@ -70,6 +73,10 @@ pub fn grid_table(
         out,
         "random: n = {n} wavelengths; hero: n = {n} samples × 4 wavelengths; regular: M = {m} buckets; seed {seed}"
     )?;
+    writeln!(out, "fitted: M = {m} wavelengths and weights fitted to each light (sampling::fitted)")?;
+    if grid.depth != Depth::ONE {
+        writeln!(out, "paths: light × patch^{} (every method, the reference included)", grid.depth)?;
+    }
     let (pdf, strata) = (sampling.pdf, sampling.strata);
     writeln!(out, "random and hero wavelengths: pdf {pdf}, strata {strata}")?;
     let balance = if viewing.white_balance { "Bradford to D65" } else { "off" };
@@ -294,6 +301,9 @@ pub fn compare_table(
         s.seed, s.trials
     )?;
     writeln!(out, "random and hero wavelengths: {}", s.sampling)?;
+    if s.depth != Depth::ONE {
+        writeln!(out, "paths: light × surface^{} (every line, the reference included)", s.depth)?;
+    }
     if let Some(display) = swatches {
         writeln!(out, "{}", swatch_legend(display.gamut))?;
     }

@@ -12,11 +12,15 @@
 //! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
+use std::fmt;
 use std::path::PathBuf;
+use std::str::FromStr;
 
+use crate::color::Xyz;
 use crate::io::Load;
+use crate::sampling::reference;
 use crate::spectrum::data::{Light, Patch};
-use crate::spectrum::{Role, TabulatedSpectrum};
+use crate::spectrum::{Product, Role, Spectrum, TabulatedSpectrum};
 use crate::study::error::StudyError;
 
 /// A spectrum with the name it has in tables.
@@ -77,4 +81,82 @@ pub fn builtin_lights() -> Vec<Named> {
 #[must_use]
 pub fn builtin_surfaces() -> Vec<Named> {
     Patch::ALL.iter().map(|p| Named::new(p.to_string(), p.spectrum().clone())).collect()
+}
+
+/// The deepest path the study follows.
+pub const MAX_DEPTH: usize = 4;
+
+/// How many surfaces a path meets before the eye: its value is light ×
+/// surface^depth (the same surface at every bounce, the worst case for
+/// narrowing). 1 is the assignment's light × surface.
+///
+/// ```
+/// use speclab::study::scene::Depth;
+/// let two: Depth = "2".parse()?;
+/// assert_eq!((two.get(), Depth::ONE.get()), (2, 1));
+/// assert!("5".parse::<Depth>().is_err() && Depth::new(0).is_err());
+/// # Ok::<(), speclab::study::StudyError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Depth(usize);
+
+impl Depth {
+    /// One bounce: light × surface.
+    pub const ONE: Depth = Depth(1);
+
+    /// Every depth, 1 to [`MAX_DEPTH`].
+    pub const ALL: [Depth; MAX_DEPTH] = [Depth(1), Depth(2), Depth(3), Depth(4)];
+
+    /// `depth` surfaces; a [`StudyError::Depth`] outside 1 ..= [`MAX_DEPTH`].
+    pub fn new(depth: usize) -> Result<Depth, StudyError> {
+        if (1..=MAX_DEPTH).contains(&depth) {
+            Ok(Depth(depth))
+        } else {
+            Err(StudyError::Depth { found: depth.to_string() })
+        }
+    }
+
+    /// The number of surfaces.
+    #[must_use]
+    pub fn get(self) -> usize {
+        self.0
+    }
+
+    /// The surface `depth` times, as one spectrum.
+    #[must_use]
+    pub fn path<'a>(self, surface: &'a TabulatedSpectrum) -> Product<'a> {
+        Product::power(surface, self.0)
+    }
+
+    /// The exact XYZ of light × surface^depth (at depth 1, exactly
+    /// [`reference::xyz`]).
+    #[must_use]
+    pub fn exact(self, light: &impl Spectrum, surface: &impl Spectrum) -> Xyz {
+        if self == Depth::ONE {
+            return reference::xyz(light, surface);
+        }
+        let mut factors: Vec<&dyn Spectrum> = vec![light];
+        factors.extend(std::iter::repeat_n(surface as &dyn Spectrum, self.0));
+        reference::xyz_of_product(&factors)
+    }
+}
+
+impl Default for Depth {
+    fn default() -> Self {
+        Depth::ONE
+    }
+}
+
+impl fmt::Display for Depth {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
+
+impl FromStr for Depth {
+    type Err = StudyError;
+    fn from_str(s: &str) -> Result<Depth, StudyError> {
+        let bad = || StudyError::Depth { found: s.to_string() };
+        s.trim().parse::<usize>().map_err(|_| bad()).and_then(|d| Depth::new(d).map_err(|_| bad()))
+    }
 }

@@ -6,10 +6,11 @@
 //! samples, seeded by [`derive_seed`] from the base seed and the pixel's
 //! place, so the swatch shows the estimator's noise as grain, and the image
 //! does not depend on the number of threads. A deterministic swatch
-//! (reference, regular buckets) is flat: its error is bias, a uniform shift.
+//! (reference, regular buckets, fitted rules) is flat: its error is bias, a uniform shift.
 //!
 //! The columns ([`columns`]): the exact reference; random (n); hero (n,
-//! K = 4); regular-center (M); regular-box (M); then hero with jittered
+//! K = 4); regular-center (M); regular-box (M); fitted (M wavelengths
+//! fitted to the light); then hero with jittered
 //! strata (uniform pdf), and hero with jittered strata and the light's pdf.
 //! Of the 4 pdfs × 3 strata those two show the two levers a renderer has,
 //! one at a time: stratification alone, then importance sampling of the
@@ -28,7 +29,7 @@
 //! let (lights, patches) = (scene::builtin_lights(), scene::builtin_surfaces());
 //! let settings = SwatchOptions { size: 4, ..SwatchOptions::default() };
 //! let sheet = swatches::render(&lights[1..2], &patches[..2], &settings)?;
-//! assert_eq!(sheet.columns.len(), 7);
+//! assert_eq!(sheet.columns.len(), 8);
 //! let reference = sheet.swatch(0, 1, 0); // D65 × F4, exact: flat
 //! assert!(reference.iter().all(|&p| p == reference[0]));
 //! let random = sheet.swatch(0, 1, 1); // every pixel its own estimate
@@ -112,6 +113,7 @@ impl Column {
             Method::Hero { k, sampling } => [format!("HERO K={k}"), how(sampling), n],
             Method::Buckets { rule: BucketRule::Center } => ["CENTER".into(), "BUCKETS".into(), m],
             Method::Buckets { rule: BucketRule::BoxAverage } => ["BOX".into(), "BUCKETS".into(), m],
+            Method::Fitted => ["FITTED".into(), "RULE".into(), m],
         }
     }
 }
@@ -138,6 +140,7 @@ pub fn columns(s: &SwatchOptions) -> Vec<Column> {
         column(Method::HERO, s.n),
         column(Method::CENTER, s.m),
         column(Method::BOX, s.m),
+        column(Method::FITTED, s.m),
         column(jitter(Pdf::Uniform), s.n),
         column(jitter(Pdf::Light), s.n),
     ]

@@ -28,6 +28,7 @@ use crate::spectrum::TabulatedSpectrum;
 use crate::study::error::StudyError;
 use crate::study::method::{Method, derive_seed};
 use crate::study::perceptual;
+use crate::study::scene::Depth;
 
 /// What a study measured.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -70,10 +71,24 @@ pub fn method(
     trials: NonZeroUsize,
     base_seed: u64,
 ) -> Result<Stats, StudyError> {
+    method_at_depth(light, surface, Depth::ONE, method, samples, trials, base_seed)
+}
+
+/// [`method`] on paths of `depth` surfaces, light × surface^depth, against
+/// that product's exact XYZ (Lab relative to the light's white).
+pub fn method_at_depth(
+    light: &TabulatedSpectrum,
+    surface: &TabulatedSpectrum,
+    depth: Depth,
+    method: Method,
+    samples: NonZeroUsize,
+    trials: NonZeroUsize,
+    base_seed: u64,
+) -> Result<Stats, StudyError> {
     let trials = if method.is_random() { trials } else { NonZeroUsize::MIN };
-    let reference = reference::xyz(light, surface);
+    let reference = depth.exact(light, surface);
     let white = reference::white(light);
-    let prepared = method.prepare(light)?;
+    let prepared = method.prepare(light)?.at_depth(depth);
     run(reference, white, trials, base_seed, |seed| prepared.xyz(surface, samples, seed))
 }
 

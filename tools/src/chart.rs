@@ -49,9 +49,10 @@ fn look(method: Method, index: usize) -> Look {
         Method::Reference => "reference (exact: ΔE00 0, drawn on the axis)".to_string(),
         Method::Buckets { rule: BucketRule::Center } => "regular, center of M buckets".to_string(),
         Method::Buckets { rule: BucketRule::BoxAverage } => "regular, box mean of M buckets".to_string(),
+        Method::Fitted => "fitted: M wavelengths and weights fitted to the light".to_string(),
         m => format!("{m} {}", m.sampling().unwrap_or_default()),
     };
-    let triangle = matches!(method, Method::Buckets { .. });
+    let triangle = method.is_fixed();
     Look { colour, triangle, label }
 }
 
@@ -72,7 +73,7 @@ fn methods<'a>(points: impl IntoIterator<Item = &'a Point>) -> Vec<Method> {
 fn labelled(method: Method, n: usize, last: usize) -> bool {
     match method {
         Method::Reference => false,
-        Method::Buckets { .. } => n == 32 || n == last,
+        Method::Buckets { .. } | Method::Fitted => n == 32 || n == last,
         _ => n == last,
     }
 }
@@ -204,7 +205,7 @@ fn curve_series(
     let last = curve.iter().map(|p| p.config.count.get()).max().unwrap_or(0);
     let labels = curve.iter().zip(&xy).filter(|(p, _)| labelled(method, p.config.count.get(), last));
     chart.draw_series(labels.map(|(p, &(x, y))| {
-        let prefix = if matches!(method, Method::Buckets { .. }) { "M" } else { "n" };
+        let prefix = if method.is_fixed() { "M" } else { "n" };
         Text::new(format!("{prefix}{}", p.config.count), (x * 1.08, y * 1.04), text.clone())
     }))?;
     Ok(())
@@ -223,7 +224,7 @@ fn draw_legend(area: &Area, order: &[Method]) -> Result<(), Failure> {
         area.draw(&line).map_err(|e| e.to_string())?;
         area.draw(&Text::new(look.label, (x + 34, y - 8), font.clone())).map_err(|e| e.to_string())?;
     }
-    let note = "points: n = 1, 2, 4, … 1024 samples (random: 1 wavelength each, hero: 4), M = 1 … 64 buckets; \
+    let note = "points: n = 1, 2, 4, … 1024 samples (random: 1 wavelength each, hero: 4), M = 1 … 64 buckets or wavelengths; \
                 ring: n = 16 or M = 16. Thick grey: the Pareto front (nothing else is both faster and more \
                 accurate). Dashed: budgets.";
     area.draw(&Text::new(note, (20, 14 + 3 * 24), font)).map_err(|e| e.to_string())

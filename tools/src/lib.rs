@@ -1,4 +1,6 @@
-//! speclab's tools: the speed–accuracy chart's drawing ([`chart`]), used by
-//! the `chart` binary and its tests. The benchmarks are in `benches/`.
+//! speclab's tools: the speed–accuracy chart's drawing ([`chart`]) and the
+//! fitted rules' picture ([`fits`]), used by the `chart` and `fits`
+//! binaries and their tests. The benchmarks are in `benches/`.
 
 pub mod chart;
+pub mod fits;

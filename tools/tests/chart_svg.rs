@@ -6,7 +6,7 @@ use std::num::NonZeroUsize;
 use speclab::study::chart::{self, Point};
 use speclab::study::cost::Cost;
 use speclab::study::method::Method;
-use speclab::study::scene::{builtin_lights, builtin_surfaces};
+use speclab::study::scene::{Depth, builtin_lights, builtin_surfaces};
 use speclab_tools::chart as draw;
 
 /// Real points for the three lights (the reference and both bucket rules,
@@ -21,7 +21,7 @@ fn points() -> Vec<Point> {
     };
     builtin_lights()
         .iter()
-        .flat_map(|l| chart::points_with_costs(l, surfaces, &methods, trials, 1, cost).unwrap())
+        .flat_map(|l| chart::points_with_costs(l, surfaces, &methods, Depth::ONE, trials, 1, cost).unwrap())
         .collect()
 }
 

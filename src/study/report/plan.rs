@@ -19,15 +19,19 @@ pub fn plan_text(
     writeln!(out, "speclab plan: the cheapest sampling whose RMS ΔE00 stays within {budget} in every cell")?;
     let cells = lights.len() * surfaces.len();
     writeln!(out, "scene: lights {}; surfaces {} ({cells} cells)", names(lights), names(surfaces))?;
-    let bias =
-        if request.allow_bias { "allowed (regular buckets are candidates)" } else { "excluded (--unbiased)" };
+    let bias = if request.allow_bias {
+        "allowed (regular buckets, and rules fitted to the scene's lights, are candidates)"
+    } else {
+        "excluded (--unbiased)"
+    };
     writeln!(out, "bias: {bias}")?;
+    writeln!(out, "paths: light × surface^{} (depth {})", request.depth, request.depth)?;
     writeln!(
         out,
         "Monte Carlo: {} trials per cell; within budget if the upper end of a 95 % interval is; seed {}",
         request.trials, request.seed
     )?;
-    writeln!(out, "buckets: within budget at M and at every larger M up to 64")?;
+    writeln!(out, "buckets and fitted rules: within budget at M and at every larger M up to 64")?;
     if let (Some(l), Some(s)) = (lights.first(), surfaces.first()) {
         writeln!(
             out,

@@ -24,14 +24,15 @@ use std::process::ExitCode;
 use speclab::Role;
 use speclab::study::chart::{self, Point};
 use speclab::study::report;
-use speclab::study::scene::{self, Choice, Named};
+use speclab::study::scene::{self, Choice, Depth, Named};
 use speclab_tools::chart as draw;
 
 const USAGE: &str = "\
-usage: chart [--trials T] [--seed S] [--light NAME|all] [--out DIR] [--quick]
+usage: chart [--trials T] [--seed S] [--light NAME|all] [--depth D] [--out DIR] [--quick]
   --trials T     trials per Monte Carlo point and patch (default 300)
   --seed S       base seed (default 1)
   --light NAME   A, D65, F11, or all (default all); repeat for several
+  --depth D      surfaces per path, 1 to 4: light × patch^D (default 1)
   --out DIR      where chart.csv, chart.svg and chart.png go (default: the current directory;
                  `--out docs` replaces the README's picture)
   --quick        40 trials, for a fast check (CI)";
@@ -40,19 +41,22 @@ struct Args {
     trials: NonZeroUsize,
     seed: u64,
     lights: Vec<String>,
+    depth: Depth,
     out: PathBuf,
 }
 
 fn parse_args() -> Result<Args, lexopt::Error> {
     use lexopt::prelude::*;
     let trials = |n: usize| NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
-    let mut args = Args { trials: trials(300), seed: 1, lights: Vec::new(), out: PathBuf::from(".") };
+    let mut args =
+        Args { trials: trials(300), seed: 1, lights: Vec::new(), depth: Depth::ONE, out: PathBuf::from(".") };
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
             Long("trials") => args.trials = parser.value()?.parse()?,
             Long("seed") => args.seed = parser.value()?.parse()?,
             Long("light") => args.lights.push(parser.value()?.string()?),
+            Long("depth") => args.depth = parser.value()?.parse()?,
             Long("out") => args.out = parser.value()?.into(),
             Long("quick") => args.trials = trials(40),
             Short('h') | Long("help") => {
@@ -79,7 +83,7 @@ fn points(args: &Args) -> Result<Vec<Point>, speclab::study::StudyError> {
     let mut all = Vec::new();
     for light in lights(&args.lights)? {
         eprintln!("chart: measuring under {} ({} trials per point and patch)", light.name, args.trials);
-        all.extend(chart::points(&light, &surfaces, &chart::curves(), args.trials, args.seed)?);
+        all.extend(chart::points(&light, &surfaces, &chart::curves(), args.depth, args.trials, args.seed)?);
     }
     Ok(all)
 }
