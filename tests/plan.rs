@@ -155,3 +155,31 @@ fn buckets_are_judged_at_every_larger_count() {
     let plan = plan::plan_with_costs(&lights, &surfaces, &tight, &at64).unwrap();
     assert!(matches!(plan.chosen.map(|c| c.verdict), Some(Verdict::Within { worst: w }) if w == worst));
 }
+
+/// Under F11 with bias allowed, the planner takes a rule fitted to F11: a
+/// handful of wavelengths, stable within budget, where box buckets need 39
+/// (costs modelled like buckets', a little dearer per wavelength).
+#[test]
+fn under_f11_a_fitted_rule_is_chosen_over_box_39() {
+    let (lights, surfaces) = (light("F11"), builtin_surfaces());
+    let mut costs = model();
+    let count = |n: usize| NonZeroUsize::new(n).unwrap();
+    for m in Method::FITTED.counts(4096) {
+        let ns = 2.5 + 0.8 * m as f64;
+        costs
+            .push((Config::new(Method::FITTED, count(m)), Cost { per_estimate_ns: ns, preparation_ns: 0.0 }));
+    }
+    let plan = plan::plan_with_costs(&lights, &surfaces, &request(1), &costs).unwrap();
+    let chosen = plan.chosen.expect("F11 can be planned for");
+    assert_eq!(chosen.config.method, Method::FITTED, "{}", chosen.config);
+    assert!(matches!(chosen.verdict, Verdict::Within { worst } if worst <= 1.0));
+    let box39 = costs.iter().find(|(c, _)| c.method == Method::BOX && c.count.get() == 39).unwrap().1;
+    assert!(chosen.cost.per_estimate_ns < box39.per_estimate_ns);
+    // Every fitted count tried below the chosen one failed the budget, or
+    // came back above it at a larger M.
+    for c in plan.others.iter().filter(|c| c.config.method == Method::FITTED) {
+        if c.config.count < chosen.config.count {
+            assert!(matches!(c.verdict, Verdict::Above { .. } | Verdict::Unstable { .. }), "{:?}", c.verdict);
+        }
+    }
+}

@@ -1,7 +1,9 @@
 //! Speed of the per-sample path, side by side in one run:
 //! one random wavelength, one hero sample (K = 4), a 16-bucket product and
-//! conversion (centre and box), the exact reference, the operations a path
-//! tracer does on a sample, and preparing bucketed spectra.
+//! conversion (centre and box), a fitted rule of 10, the exact reference,
+//! the operations a path tracer does on a sample, drawing hero samples from
+//! each pdf, evaluating each kind of spectrum, preparing bucketed spectra,
+//! and fitting rules.
 //!
 //! And one light three ways (built in, scaled, loaded from its file): the
 //! same path at the same speed.
@@ -53,6 +55,12 @@ fn per_sample(c: &mut Criterion) {
     );
     group.bench_function("regular M=16 box, multiply + to_xyz", |b| {
         b.iter(|| (black_box(lb) * black_box(sb)).to_xyz())
+    });
+    let rule = speclab::sampling::fitted::FittedRule::fit(&[light], 10).expect("a rule");
+    let at = rule.wavelengths::<10>().expect("M = 10");
+    let (lf, sf) = (light.sample(&at), surface.sample(&at));
+    group.bench_function("fitted M=10, multiply + to_xyz", |b| {
+        b.iter(|| at.to_xyz(black_box(lf) * black_box(sf)))
     });
     group.bench_function("exact reference", |b| {
         b.iter(|| reference::xyz(black_box(light), black_box(surface)))
@@ -170,6 +178,18 @@ fn preparing(c: &mut Criterion) {
         b.iter(|| RegularSpectrum::<16, BoxAverage>::box_average(black_box(light)))
     });
     prep.finish();
+    let mut fit = c.benchmark_group("fitting a rule (once per scene's lights)");
+    fit.sample_size(10);
+    for m in [8, 16] {
+        fit.bench_function(format!("FittedRule::fit F11, M={m}"), |b| {
+            b.iter(|| speclab::sampling::fitted::FittedRule::fit(&[black_box(light)], m))
+        });
+    }
+    let three: [&dyn speclab::Spectrum; 3] = [&data::lights::A, &data::lights::D65, light];
+    fit.bench_function("FittedRule::fit A + D65 + F11, M=16", |b| {
+        b.iter(|| speclab::sampling::fitted::FittedRule::fit(black_box(&three), 16))
+    });
+    fit.finish();
 }
 
 criterion_group!(benches, per_sample);
