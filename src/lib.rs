@@ -5,10 +5,12 @@
 //! cost and error, checked against an exact reference.
 //!
 //! Three nouns (see `ARCHITECTURE.md`):
-//! - a continuous spectrum, [`TabulatedSpectrum`], evaluated at any
-//!   wavelength in nanometres ([`spectrum`]);
-//! - a set of wavelengths: a [`HeroSample<K>`] (random, with a pdf each) or
-//!   the `M` buckets of a [`RegularSpectrum<M>`] (fixed) ([`sampling`]);
+//! - a continuous spectrum, anything that implements [`Spectrum`]
+//!   ([`TabulatedSpectrum`], dense, constant, blackbody, RGB-derived or a
+//!   closure), evaluated at any wavelength in nanometres ([`spectrum`]);
+//! - a set of wavelengths: a [`HeroSample<K>`] (random, with a pdf each),
+//!   the `M` buckets of a [`RegularSpectrum<M>`] (fixed) or the `M`
+//!   wavelengths of a rule fitted to the scene's lights ([`sampling`]);
 //! - the values at them: [`SampledSpectrum<K>`] or the buckets' values,
 //!   turned into [`Xyz`] and [`LinearSrgb`] ([`color`]).
 //!

@@ -16,7 +16,7 @@
 //!
 //! The normal equations need `Σ ω²·r(λⱼ)·r(λₖ)` over the prior for every
 //! pair of candidates, which does not depend on the light: it is computed
-//! once per process (a third of a second) and scaled by `L(λⱼ)·L(λₖ)` per
+//! once per process (about 70 ms in a release build) and scaled by `L(λⱼ)·L(λₖ)` per
 //! light. The search for the nodes is in `fit_search.rs`. Everything is
 //! sequential and in a fixed order: the same rule on every run. Scales are
 //! taken out first (the light's brightest white channel), so a light of any

@@ -7,9 +7,14 @@
 //!   380–730 nm, filled by center samples ([`Center`]) or exact bucket means
 //!   ([`BoxAverage`]); [`buckets`]: the two rules, and buckets whose count is
 //!   chosen at run time.
+//! - [`fitted`]: M wavelengths and a 3 × M weight matrix fitted to a
+//!   scene's lights over a reflectance prior ([`prior`]); a renderer uses
+//!   the rule as [`fitted::FittedWavelengths<M>`].
 //! - [`pdf`]: wavelength densities (uniform, visible, following a light)
-//!   behind the [`pdf::WavelengthPdf`] trait; [`strata`]: how the primary
-//!   numbers of an estimate are spread (independent, jittered, Kronecker).
+//!   behind the [`pdf::WavelengthPdf`] trait, and [`binned`]: any of them
+//!   as equal-probability bins, sampled without a search; [`strata`]: how
+//!   the primary numbers of an estimate are spread (none, jittered,
+//!   Kronecker).
 //! - [`mod@reference`]: the exact integral, which the estimates are judged by;
 //!   [`PreparedLight`]: the same as a dot product, for many reflectances.
 //!
