@@ -113,3 +113,17 @@ fn visible_histogram_tracks_visible() {
         assert!((a - b).abs() < 0.02 * b, "{lambda}: {a} against {b}");
     }
 }
+
+#[test]
+fn the_range_ends_belong_to_the_end_bins() {
+    let light = LightPdf::light(&lights::F11).unwrap();
+    let binned = BinnedPdf::new(&light, 64).unwrap();
+    let (first, last) = (binned.knots()[0], binned.knots()[64]);
+    let width = |i: usize| binned.knots()[i + 1] - binned.knots()[i];
+    // The last knot is in the last bin (not one past it), the first in the first.
+    assert_eq!(binned.pdf(last), 1.0 / (64.0 * width(63)));
+    assert_eq!(binned.pdf(first), 1.0 / (64.0 * width(0)));
+    assert_eq!(binned.cdf(last), Some(1.0));
+    assert_eq!(binned.cdf(first), Some(0.0));
+    assert_eq!(binned.pdf(last + 1e-9), 0.0);
+}
