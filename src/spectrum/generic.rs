@@ -117,36 +117,26 @@ pub trait Spectrum {
     }
 }
 
-impl<S: Spectrum + ?Sized> Spectrum for &S {
-    #[inline]
-    fn eval(&self, lambda: f64) -> f64 {
-        (**self).eval(lambda)
-    }
-    #[inline]
-    fn eval_many(&self, lambda: &[f64], values: &mut [f64]) {
-        (**self).eval_many(lambda, values);
-    }
-    fn pieces(&self) -> Option<Pieces<'_>> {
-        (**self).pieces()
-    }
-    fn as_tabulated(&self) -> Option<&TabulatedSpectrum> {
-        (**self).as_tabulated()
-    }
+/// A reference or a box to a spectrum is the spectrum.
+macro_rules! forward_spectrum {
+    ($($pointer:ty),*) => {$(
+        impl<S: Spectrum + ?Sized> Spectrum for $pointer {
+            #[inline]
+            fn eval(&self, lambda: f64) -> f64 {
+                (**self).eval(lambda)
+            }
+            #[inline]
+            fn eval_many(&self, lambda: &[f64], values: &mut [f64]) {
+                (**self).eval_many(lambda, values);
+            }
+            fn pieces(&self) -> Option<Pieces<'_>> {
+                (**self).pieces()
+            }
+            fn as_tabulated(&self) -> Option<&TabulatedSpectrum> {
+                (**self).as_tabulated()
+            }
+        }
+    )*};
 }
 
-impl<S: Spectrum + ?Sized> Spectrum for Box<S> {
-    #[inline]
-    fn eval(&self, lambda: f64) -> f64 {
-        (**self).eval(lambda)
-    }
-    #[inline]
-    fn eval_many(&self, lambda: &[f64], values: &mut [f64]) {
-        (**self).eval_many(lambda, values);
-    }
-    fn pieces(&self) -> Option<Pieces<'_>> {
-        (**self).pieces()
-    }
-    fn as_tabulated(&self) -> Option<&TabulatedSpectrum> {
-        (**self).as_tabulated()
-    }
-}
+forward_spectrum!(&S, Box<S>);
