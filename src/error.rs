@@ -60,44 +60,25 @@ pub enum Error {
         /// Its pdf, 1/nm.
         pdf: f64,
     },
-    /// A hero width with no compiled instance of `HeroSample<K>`.
-    HeroWidth {
-        /// The width asked for.
-        k: usize,
-        /// The compiled widths.
-        widths: &'static [usize],
-    },
-    /// A bucket count outside what the bucket types support.
-    BucketCount {
-        /// The count asked for.
-        m: usize,
-        /// The largest count supported (the smallest is 1).
+    /// A count outside its range: a hero width, a number of buckets, of
+    /// fitted wavelengths, of bins, or a rule taken as a value of another
+    /// size.
+    Count {
+        /// What was counted, e.g. `a bucket count`.
+        what: &'static str,
+        /// The count given.
+        found: usize,
+        /// The smallest count allowed.
+        min: usize,
+        /// The largest count allowed.
         max: usize,
     },
+    /// A rule of box buckets asked for as wavelengths: its values are
+    /// means over its buckets, not values at wavelengths.
+    BoxRule,
     /// A light with no power where the observer sees, within 380–730 nm: no
     /// wavelength pdf can follow it.
     DarkLight,
-    /// A wavelength count outside what a fitted rule supports.
-    NodeCount {
-        /// The count asked for.
-        m: usize,
-        /// The largest count supported (the smallest is 1).
-        max: usize,
-    },
-    /// A fitted rule asked for as a value of another size.
-    RuleSize {
-        /// The rule's number of wavelengths.
-        rule: usize,
-        /// The size asked for.
-        asked: usize,
-    },
-    /// A bin count outside what a binned pdf supports.
-    BinCount {
-        /// The count asked for.
-        bins: usize,
-        /// The largest count supported (the smallest is 1).
-        max: usize,
-    },
     /// A density with no mass over 380–730 nm (or a mass that is not
     /// finite): nothing to sample.
     NoMass,
@@ -145,17 +126,17 @@ impl fmt::Display for Error {
                 "wavelength {index}: expected a finite wavelength with a finite non-negative pdf, \
                  found {lambda} nm with pdf {pdf}"
             ),
-            Error::HeroWidth { k, widths } => {
-                write!(f, "expected a hero width of {} wavelengths, found {k}", or_list(widths.iter()))
+            Error::Count { what, found, min, max } if min == max => {
+                write!(f, "expected {what} of {min}, found {found}")
             }
-            Error::BucketCount { m, max } => write!(f, "expected a bucket count from 1 to {max}, found {m}"),
-            Error::NodeCount { m, max } => {
-                write!(f, "expected a wavelength count from 1 to {max}, found {m}")
+            Error::Count { what, found, min, max } => {
+                write!(f, "expected {what} from {min} to {max}, found {found}")
             }
-            Error::RuleSize { rule, asked } => {
-                write!(f, "expected the rule's size, M = {rule}, found M = {asked}")
-            }
-            Error::BinCount { bins, max } => write!(f, "expected a bin count from 1 to {max}, found {bins}"),
+            Error::BoxRule => write!(
+                f,
+                "expected a rule whose values are taken at its wavelengths, found box buckets \
+                 (their values are means over the buckets)"
+            ),
             Error::NoMass => {
                 write!(f, "expected a density with finite positive mass over 380-730 nm, found none")
             }

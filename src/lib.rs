@@ -25,7 +25,7 @@
 //! [`rand`], the version the API names) and `speclab-tables` as the only
 //! dependencies.
 //!
-//! A renderer's inner loop, per sample:
+//! A renderer's inner loop, per sample (values in `f64`, the default):
 //!
 //! ```
 //! use speclab::{data::{lights, patches}, HeroSample, SampledSpectrum, Xyz};
@@ -43,8 +43,40 @@
 //! let pixel = pixel / 64.0;
 //! assert!(pixel.y > 0.0 && pixel.to_linear_srgb().g > pixel.to_linear_srgb().r);
 //! ```
+//!
+//! The same loop as a renderer computing in `f32` writes it: its own
+//! uniform numbers, `f32` tables looked up at the nearest nanometre (the
+//! fast path), one `HeroSample<4, f32>` per path carrying its wavelengths
+//! and weights, and XYZ at the end, summed in `f64` (see
+//! [`spectrum::Float`] on long sums). No conversion is written.
+//!
+//! ```
+//! use speclab::{data::{lights, patches}, sampling::reference, HeroSample, SampledSpectrum, Xyz};
+//! use speclab::spectrum::{DenseObserver, DenseSpectrum};
+//! let light = DenseSpectrum::<f32>::new(&lights::F11); // once per scene
+//! let walls = [&patches::G4, &patches::A1].map(DenseSpectrum::<f32>::new);
+//! let observer = DenseObserver::<f32>::new();
+//! let mut pixel = Xyz::ZERO;
+//! for i in 0..1024_u16 {
+//!     let u = (f32::from(i) + 0.5) / 1024.0; // the renderer's own number
+//!     let path = HeroSample::<4, f32>::with_observer(u, &observer); // one value per path
+//!     let (le, mut beta, mut l) = (light.sample(&path), SampledSpectrum::splat(1.0), SampledSpectrum::zero());
+//!     for wall in &walls {
+//!         beta *= wall.sample(&path); // a bounce off each wall
+//!         l += beta * le * 0.5; // and half the light seen there
+//!     }
+//!     pixel += path.to_xyz(l);
+//! }
+//! let pixel = pixel / 1024.0;
+//! let g4 = reference::xyz(&lights::F11, &patches::G4);
+//! let g4_a1 = reference::xyz_of_product(&[&lights::F11, &patches::G4, &patches::A1]);
+//! let exact = (g4 + g4_a1) * 0.5;
+//! assert!((pixel.y - exact.y).abs() < 2e-3 * exact.y, "{pixel:?} against {exact:?}");
+//! ```
 
 #![warn(missing_docs)]
+// One `unsafe` block, in `spectrum/lookup.rs`, allowed there alone.
+#![deny(unsafe_code)]
 
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]

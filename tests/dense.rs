@@ -1,15 +1,17 @@
-//! Dense tables against their sources: the largest error every 0.01 nm over
-//! 380–730 nm for every built-in spectrum and the observer (the bounds the
-//! documentation of `spectrum::dense` states), zero outside the range,
-//! steps, and exact integrals of the lines.
+//! Dense tables against their sources: every whole nanometre exact (f64)
+//! or rounded (f32), steps between, zero outside 380–730 nm, the largest
+//! point-wise error and the error of the exact integrals (the bounds the
+//! documentation of `spectrum::dense` states, measured here), and the
+//! dense observer equal to dense tables of x̄, ȳ, z̄.
 
-use speclab::data::{cie1931, lights, patches};
+use speclab::data::{Light, Patch, cie1931, lights, patches};
 use speclab::sampling::reference;
-use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Observer};
+use speclab::spectrum::observer::xyz_bar;
+use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Float, Observer};
 use speclab::{Spectrum, Xyz};
 
 /// The largest |dense − source| every 0.01 nm over 380–730 nm.
-fn worst(source: &dyn Spectrum, dense: &DenseSpectrum) -> f64 {
+fn worst<T: Float>(source: &dyn Spectrum, dense: &DenseSpectrum<T>) -> f64 {
     (0..=35_000)
         .map(|i| 380.0 + f64::from(i) * 0.01)
         .map(|l| (dense.eval(l) - source.eval(l)).abs())
@@ -17,62 +19,107 @@ fn worst(source: &dyn Spectrum, dense: &DenseSpectrum) -> f64 {
 }
 
 #[test]
-fn built_in_spectra_within_the_stated_errors() {
-    for light in [&lights::A, &lights::D65, &lights::F11] {
-        let peak = light.values().iter().copied().fold(0.0, f64::max);
-        let error = worst(light, &DenseSpectrum::new(light));
-        assert!(error <= 1e-15 * peak, "lights are lines on whole nanometres: {error:e}");
-    }
-    let surfaces = [&patches::E2, &patches::F4, &patches::G4, &patches::H4, &patches::J4, &patches::A1];
-    let errors: Vec<f64> = surfaces.iter().map(|s| worst(s, &DenseSpectrum::new(s))).collect();
-    assert!(errors.iter().all(|&e| e <= 1.9e-4), "{errors:?}");
-    assert!(errors[..5].iter().all(|&e| e <= 8e-5), "{errors:?}");
-    for (cmf, bound) in [(&cie1931::X_BAR, 1.3e-4), (&cie1931::Y_BAR, 9.7e-5), (&cie1931::Z_BAR, 5.92e-4)] {
-        assert!(worst(cmf, &DenseSpectrum::new(cmf)) <= bound);
-    }
-    // The dense observer is the dense tables of x̄, ȳ, z̄ in one row.
-    let (dense, exact) = (DenseObserver::new(), Cie1931);
-    let mut largest = [0.0f64; 3];
-    for i in 0..=35_000 {
-        let l = [380.0 + f64::from(i) * 0.01];
-        let (a, b) = (dense.xyz_bar_lanes(&l)[0], exact.xyz_bar_lanes(&l)[0]);
-        for c in 0..3 {
-            largest[c] = largest[c].max((a[c] - b[c]).abs());
+fn whole_nanometres_are_the_source() {
+    for s in [&lights::F11 as &dyn Spectrum, &patches::G4, &cie1931::Z_BAR] {
+        let (d64, d32) = (DenseSpectrum::<f64>::new(s), DenseSpectrum::<f32>::new(s));
+        for i in 0..=350 {
+            let l = 380.0 + f64::from(i);
+            assert_eq!(d64.eval(l), s.eval(l), "{l}");
+            assert_eq!(d32.eval(l), f64::from(s.eval(l) as f32), "{l}");
+            // A step: the same value to either side, up to half a
+            // nanometre (within 380–730 nm).
+            assert_eq!(d64.eval((l - 0.49).max(380.0)), d64.eval(l));
+            assert_eq!(d64.eval((l + 0.49).min(730.0)), d64.eval(l));
         }
+        assert_eq!(d64.values().len(), 351);
     }
-    assert!(largest[0] <= 1.3e-4 && largest[1] <= 9.7e-5 && largest[2] <= 5.92e-4, "{largest:?}");
+}
+
+/// The point-wise errors the documentation states (measured: patches
+/// 0.0137, observer 0.0404, F11 4.56 of its 72.84 peak).
+#[test]
+fn point_wise_errors_within_the_stated_bounds() {
+    let patch = Patch::ALL.iter().map(|p| worst(p.spectrum(), &DenseSpectrum::<f64>::new(p.spectrum())));
+    let patch = patch.fold(0.0, f64::max);
+    let cmf =
+        [&cie1931::X_BAR, &cie1931::Y_BAR, &cie1931::Z_BAR].map(|c| worst(c, &DenseSpectrum::<f64>::new(c)));
+    let cmf = cmf.into_iter().fold(0.0, f64::max);
+    let f11 = worst(&lights::F11, &DenseSpectrum::<f64>::new(&lights::F11));
+    eprintln!("largest point-wise errors: patches {patch:.4}, observer {cmf:.4}, F11 {f11:.3}");
+    assert!(patch <= 0.014 && cmf <= 0.041 && f11 <= 4.6, "{patch} {cmf} {f11}");
+    assert!(patch > 0.005 && f11 > 1.0, "steps are steps: {patch} {f11}");
+}
+
+/// The error the estimates see: the exact XYZ of a dense light times a
+/// dense patch against the tables', the largest over the six patches
+/// relative to each channel, in f64 and f32 (measured: A 8.1e-5, D65
+/// 6.4e-5, F11 9.3e-5; f32 adds less than 1e-6).
+#[test]
+fn integrals_within_the_stated_error() {
+    let mut worst_by_light = Vec::new();
+    for light in Light::ALL {
+        let mut largest = 0.0f64;
+        for patch in Patch::ALL {
+            let (l, s) = (light.spectrum(), patch.spectrum());
+            let exact = reference::xyz(l, s).to_array();
+            for dense in [
+                reference::xyz(&DenseSpectrum::<f64>::new(l), &DenseSpectrum::<f64>::new(s)),
+                reference::xyz(&DenseSpectrum::<f32>::new(l), &DenseSpectrum::<f32>::new(s)),
+            ] {
+                for (d, e) in dense.to_array().iter().zip(exact) {
+                    largest = largest.max((d - e).abs() / e);
+                }
+            }
+        }
+        eprintln!("{light}: largest relative error of a dense pair's exact XYZ {largest:.2e}");
+        worst_by_light.push(largest);
+    }
+    assert!(worst_by_light.iter().all(|&e| e <= 1e-4), "{worst_by_light:?}");
 }
 
 #[test]
 fn zero_outside_the_range() {
-    let d = DenseSpectrum::new(&lights::D65);
+    let d = DenseSpectrum::<f64>::new(&lights::D65);
     for l in [379.999, 730.001, f64::NAN, f64::NEG_INFINITY, f64::INFINITY] {
         assert_eq!(d.eval(l), 0.0, "{l}");
     }
-    assert!((d.eval(730.0) - lights::D65.eval(730.0)).abs() < 1e-12);
-    assert!((d.eval(380.0) - lights::D65.eval(380.0)).abs() < 1e-12);
-    let knots = d.pieces().expect("lines").breaks;
-    assert_eq!((knots.len(), knots[0], knots[350]), (351, 380.0, 730.0));
-    let dark = DenseObserver::new().xyz_bar_lanes(&[f64::NAN, 379.0, 731.0]);
-    assert_eq!(dark, [[0.0; 3]; 3]);
+    let breaks = d.pieces().expect("steps").breaks;
+    assert_eq!((breaks.len(), breaks[0], breaks[1], breaks[351]), (352, 380.0, 380.5, 730.0));
+    let at = [f64::NAN, 379.0, 731.0];
+    assert_eq!(DenseObserver::<f64>::new().xyz_bar_at(&at), [[0.0; 4]; 3]);
 }
 
-/// A dense table is lines between its knots, so its integrals are exact:
-/// the reference of two dense tables equals a 0.001 nm midpoint sum.
+/// The dense observer is the dense tables of x̄, ȳ, z̄ in one row, in
+/// either precision, and the exact observer at whole nanometres.
+#[test]
+fn the_dense_observer_is_dense_tables() {
+    let tables = [&cie1931::X_BAR, &cie1931::Y_BAR, &cie1931::Z_BAR].map(DenseSpectrum::<f64>::new);
+    let (d64, d32) = (DenseObserver::<f64>::new(), DenseObserver::<f32>::new());
+    for i in 0..=3500 {
+        let l = 380.0 + f64::from(i) * 0.1;
+        let [row] = d64.xyz_bar_at(&[l]);
+        assert_eq!(row, [tables[0].eval(l), tables[1].eval(l), tables[2].eval(l), 0.0], "{l}");
+        let [row32] = d32.xyz_bar_at(&[l as f32]);
+        for c in 0..3 {
+            assert!((f64::from(row32[c]) - row[c]).abs() <= 1e-7 * row[c].max(1e-3), "{l}");
+        }
+    }
+    let whole = [455.0, 555.0];
+    assert_eq!(d64.xyz_bar_at(&whole), Cie1931.xyz_bar_at(&whole));
+}
+
+/// Steps integrate exactly: the reference of two dense tables equals a
+/// 0.001 nm midpoint sum.
 #[test]
 fn dense_tables_integrate_exactly() {
-    let (l, s) = (DenseSpectrum::new(&lights::F11), DenseSpectrum::new(&patches::G4));
+    let (l, s) = (DenseSpectrum::<f64>::new(&lights::F11), DenseSpectrum::<f64>::new(&patches::G4));
     let exact = reference::xyz(&l, &s);
     let h = 0.001;
     let mut sum = Xyz::ZERO;
     for i in 0..350_000 {
         let x = 380.0 + (f64::from(i) + 0.5) * h;
-        let [cx, cy, cz] = speclab::spectrum::observer::xyz_bar(x);
-        sum += Xyz::new(cx, cy, cz) * (l.eval(x) * s.eval(x) * h);
+        sum += Xyz::from(xyz_bar(x)) * (l.eval(x) * s.eval(x) * h);
     }
     let gap = (exact - sum).to_array().iter().fold(0.0f64, |m, d| m.max(d.abs()));
     assert!(gap < 1e-6 * exact.y, "{exact:?} vs {sum:?}");
-    // And close to the tables' own reference: the dense tables' error.
-    let table = reference::xyz(&lights::F11, &patches::G4);
-    assert!((exact.y - table.y).abs() < 1e-4 * table.y, "{exact:?} vs {table:?}");
 }

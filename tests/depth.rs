@@ -9,7 +9,8 @@ use std::num::NonZeroUsize;
 
 use speclab::TabulatedSpectrum;
 use speclab::data::{Light, Patch, lights, patches};
-use speclab::sampling::buckets::{BucketRule, Buckets};
+use speclab::sampling::buckets::BucketRule;
+use speclab::sampling::rule::Rule;
 use speclab::spectrum::observer::xyz_bar;
 use speclab::study::method::Method;
 use speclab::study::scene::{Depth, MAX_DEPTH};
@@ -86,10 +87,10 @@ fn fixed_methods_at_depth() {
     for d in 1..=MAX_DEPTH {
         let depth = Depth::new(d).unwrap();
         let boxed = Method::BOX.prepare(l).unwrap().at_depth(depth).xyz(s, m, 0).unwrap();
-        let b = Buckets::new(16, BucketRule::BoxAverage).unwrap();
+        let b = Rule::buckets(16, BucketRule::BoxAverage).unwrap();
         let (lv, sv) = (b.values(l), b.values(s));
         let by_hand: Vec<f64> = lv.iter().zip(&sv).map(|(a, r)| a * r.powi(d as i32)).collect();
-        let want = b.xyz_of_product(&[&by_hand]);
+        let want = b.xyz_of_factors(&[&by_hand]);
         assert!((boxed - want).to_array().iter().all(|e| e.abs() <= 1e-12 * want.y), "depth {d}");
         let fitted = Method::FITTED.prepare(l).unwrap().at_depth(depth).xyz(s, m, 0).unwrap();
         let exact = depth.exact(l, s);

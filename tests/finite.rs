@@ -109,13 +109,14 @@ fn study(l: &TabulatedSpectrum, s: &TabulatedSpectrum, seed: u64) -> Result<(), 
 #[cfg(feature = "study")]
 #[test]
 fn nearly_zero_white_component() {
-    use speclab::sampling::buckets::{BucketRule, Buckets};
+    use speclab::sampling::buckets::BucketRule;
+    use speclab::sampling::rule::Rule;
     use speclab::study::perceptual;
     let l = spectrum(vec![0.0, 0.0, 0.0, 5.562_684_646_268_003e-309, 1e100], Role::Light).expect("valid");
     let s = spectrum(vec![0.0, 0.0, 0.0, 0.516_878_024_304_750_5], Role::Reflectance).expect("valid");
     let (exact, white) = (reference::xyz(&l, &s), reference::white(&l));
     assert!(white.z > 0.0 && white.z < 1e-300, "{white:?}");
-    let boxed = Buckets::new(1, BucketRule::BoxAverage).expect("M = 1").xyz(&l, &s);
+    let boxed = Rule::buckets(1, BucketRule::BoxAverage).expect("M = 1").xyz(&l, &s);
     assert!(boxed.z / white.z == f64::INFINITY, "the ratio overflows");
     let de = perceptual::delta_e00(boxed, exact, white);
     assert!(de.is_finite() && de > 50.0, "finite and far off: {de}");

@@ -3,9 +3,10 @@
 //! F11 target on the six patches, and refuse what they cannot fit.
 
 use speclab::data::{Light, lights, patches};
-use speclab::sampling::fitted::{ANCHOR_TOLERANCE, FitProblem, FittedRule, MAX_NODES};
+use speclab::sampling::fitted::{ANCHOR_TOLERANCE, FitProblem};
 use speclab::sampling::prior::PriorMean;
 use speclab::sampling::reference;
+use speclab::sampling::rule::{MAX_M, Rule};
 use speclab::{Error, Role, Spectrum, TabulatedSpectrum, Xyz};
 
 fn close(a: Xyz, b: Xyz, tolerance: f64) -> bool {
@@ -39,7 +40,7 @@ fn anchors_are_reproduced() {
 #[test]
 fn a_rule_for_several_lights_reproduces_each_white() {
     let all: Vec<&dyn Spectrum> = Light::ALL.iter().map(|l| l.spectrum() as &dyn Spectrum).collect();
-    let rule = FittedRule::fit(&all, 12).unwrap();
+    let rule = Rule::fit(&all, 12).unwrap();
     for light in Light::ALL.map(|l| l.spectrum()) {
         assert!(close(rule.xyz_of_product(&[light]), reference::white(light), ANCHOR_TOLERANCE));
     }
@@ -50,30 +51,31 @@ fn a_rule_for_several_lights_reproduces_each_white() {
 /// brighter light needs the same ones).
 #[test]
 fn the_fit_is_deterministic_and_scale_free() {
-    let a = FittedRule::fit(&[&lights::F11], 10).unwrap();
+    let a = Rule::fit(&[&lights::F11], 10).unwrap();
     let b = FitProblem::new(&[&lights::F11]).unwrap().rule(10);
     assert_eq!(a, b);
     for factor in [1e-200, 3.0, 1e90] {
         let scaled = lights::F11.scaled(factor).unwrap();
-        let c = FittedRule::fit(&[&scaled], 10).unwrap();
+        let c = Rule::fit(&[&scaled], 10).unwrap();
         assert_eq!(c.lambda(), a.lambda(), "× {factor:e}");
         // The scaled light's values round differently, and least squares on
         // near-collinear columns magnifies that (condition ~1e8).
-        for (wc, wa) in c.weights().iter().flatten().zip(a.weights().iter().flatten()) {
+        for (wc, wa) in c.weights().0.iter().flatten().zip(a.weights().0.iter().flatten()) {
             assert!((wc - wa).abs() <= 1e-6 * wa.abs().max(1e-3), "× {factor:e}: {wc} against {wa}");
         }
     }
 }
 
-/// M increasing wavelengths inside the range, and one weight triple each.
+/// M increasing wavelengths inside the range, and three rows of M weights.
 #[test]
 fn the_rule_has_m_wavelengths_in_the_range() {
-    for m in [1, 2, 7, 16, MAX_NODES] {
-        let rule = FittedRule::fit(&[&lights::D65], m).unwrap();
-        assert_eq!((rule.m(), rule.lambda().len(), rule.weights().len()), (m, m, m));
+    for m in [1, 2, 7, 16, MAX_M] {
+        let rule = Rule::fit(&[&lights::D65], m).unwrap();
+        assert_eq!((rule.m(), rule.lambda().len()), (m, m));
+        assert!(rule.weights().0.iter().all(|row| row.len() == m) && rule.weights().1 == 1.0);
         assert!(rule.lambda().windows(2).all(|w| w[0] < w[1]), "{:?}", rule.lambda());
         assert!(rule.lambda().iter().all(|l| (380.0..=730.0).contains(l)));
-        assert!(rule.weights().iter().flatten().all(|w| w.is_finite()));
+        assert!(rule.weights().0.iter().flatten().all(|w| w.is_finite()));
     }
 }
 
@@ -81,8 +83,8 @@ fn the_rule_has_m_wavelengths_in_the_range() {
 /// and the stored values give the same XYZ as the rule evaluating.
 #[test]
 fn every_form_of_the_rule_gives_the_same_numbers() {
-    let rule = FittedRule::fit(&[&lights::A], 8).unwrap();
-    let at = rule.wavelengths::<8>().unwrap();
+    let rule = Rule::fit(&[&lights::A], 8).unwrap();
+    let at = rule.wavelengths::<8, f64>().unwrap();
     let (l, s) = (&lights::A, &patches::J4);
     let direct = rule.xyz_of_product(&[l, s]);
     assert_eq!(at.to_xyz(l.sample(&at) * s.sample(&at)), direct);
@@ -95,7 +97,11 @@ fn every_form_of_the_rule_gives_the_same_numbers() {
     let mut long = sv.to_vec();
     long.push(1e9);
     assert_eq!(rule.xyz_of_factors(&[&lv, &long]), direct);
-    assert!(matches!(rule.wavelengths::<9>(), Err(Error::RuleSize { rule: 8, asked: 9 })));
+    assert!(matches!(rule.wavelengths::<9, f64>(), Err(Error::Count { found: 9, min: 8, max: 8, .. })));
+    // In f32, the same rule to f32 rounding.
+    let at32 = rule.wavelengths::<8, f32>().unwrap();
+    let single = at32.to_xyz(l.sample(&at32) * s.sample(&at32));
+    assert!(close(single, direct, 1e-6), "{single:?} vs {direct:?}");
 }
 
 /// The target of the issue that asked for fitted rules: under F11, worst
@@ -120,19 +126,22 @@ fn under_f11_the_six_patches_are_within_1_from_m_8() {
 
 #[test]
 fn what_cannot_be_fitted_is_an_error() {
-    for m in [0, MAX_NODES + 1] {
-        let err = FittedRule::fit(&[&lights::A], m).unwrap_err();
-        assert!(matches!(err, Error::NodeCount { .. }), "{m}: {err}");
-        assert_eq!(err.to_string(), format!("expected a wavelength count from 1 to {MAX_NODES}, found {m}"));
+    for m in [0, MAX_M + 1] {
+        let err = Rule::fit(&[&lights::A], m).unwrap_err();
+        assert!(matches!(err, Error::Count { .. }), "{m}: {err}");
+        assert_eq!(
+            err.to_string(),
+            format!("expected a fitted wavelength count from 1 to {MAX_M}, found {m}")
+        );
     }
     let black = TabulatedSpectrum::new(vec![380.0, 730.0], vec![0.0, 0.0], Role::Light).unwrap();
     for lights in [vec![], vec![&black as &dyn Spectrum], vec![&lights::A as &dyn Spectrum, &black]] {
-        let err = FittedRule::fit(&lights, 4).unwrap_err();
+        let err = Rule::fit(&lights, 4).unwrap_err();
         assert!(matches!(err, Error::DarkLight), "{err}");
     }
     // A light the observer sees in X and Y but not at all in Z still fits.
     let red = TabulatedSpectrum::new(vec![380.0, 599.0, 600.0, 730.0], vec![0.0, 0.0, 1.0, 1.0], Role::Light)
         .unwrap();
-    let rule = FittedRule::fit(&[&red], 6).unwrap();
+    let rule = Rule::fit(&[&red], 6).unwrap();
     assert!(close(rule.xyz_of_product(&[&red]), reference::white(&red), ANCHOR_TOLERANCE));
 }

@@ -12,9 +12,11 @@
 //! with `lib.rs` and `fuzzing.rs` above them all. The reader looks at every
 //! `crate::…` path outside comments (in `use` lines and in code), resolves
 //! names re-exported at the crate root through `lib.rs`, and fails on a
-//! path that goes up a floor.
+//! path that goes up a floor. Inside a floor, the modules' imports (names
+//! re-exported by the floor's `mod.rs` resolved to their module; test code
+//! left out) must form no cycle.
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
 
 /// The floor of a top-level module of the crate.
@@ -174,4 +176,102 @@ fn the_reader_sees_every_path() {
     assert_eq!(roots.get("Error").map(String::as_str), Some("error"));
     assert_eq!(file_floor(Path::new("sampling/hero.rs")), 3);
     assert_eq!(tables_floor("read"), 4);
+}
+
+/// The modules of a floor's folder that each module uses, from the
+/// `crate::floor::…` paths of its code before any `#[cfg(test)]` (files
+/// named `*_tests.rs` left out), names re-exported by `mod.rs` resolved to
+/// their module.
+fn floor_graph(folder: &Path, floor: &str) -> BTreeMap<String, BTreeSet<String>> {
+    let mut files = Vec::new();
+    sources(folder, &mut files);
+    let module_of = |file: &Path| -> String {
+        let relative = file.strip_prefix(folder).expect("under the folder");
+        let first = relative.components().next().and_then(|c| c.as_os_str().to_str()).unwrap_or("");
+        first.trim_end_matches(".rs").to_string()
+    };
+    let modules: BTreeSet<String> = files.iter().map(|f| module_of(f)).filter(|m| m != "mod").collect();
+    let mod_rs = std::fs::read_to_string(folder.join("mod.rs")).unwrap_or_default();
+    let mut exported = HashMap::new();
+    for statement in code(&mod_rs).split(';') {
+        let statement = statement.trim();
+        let Some(path) = statement.strip_prefix("pub use ").or(statement.strip_prefix("pub(crate) use "))
+        else {
+            continue;
+        };
+        let module = path.split("::").next().unwrap_or("").trim().to_string();
+        for name in
+            first_segments(&format!("crate::{}", &path[module.len()..].trim_start_matches("::")), "crate::")
+        {
+            exported.insert(name, module.clone());
+        }
+    }
+    let mut graph: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for file in files.iter().filter(|f| !f.to_string_lossy().ends_with("_tests.rs")) {
+        let module = module_of(file);
+        let text = std::fs::read_to_string(file).expect("readable");
+        let text = code(text.split("#[cfg(test)]").next().unwrap_or(""));
+        for name in first_segments(&text.replace(&format!("crate::{floor}::"), "crate::"), "crate::") {
+            let target = if modules.contains(&name) { Some(name) } else { exported.get(&name).cloned() };
+            if let Some(target) = target.filter(|t| *t != module && modules.contains(t)) {
+                graph.entry(module.clone()).or_default().insert(target);
+            }
+        }
+    }
+    graph
+}
+
+/// A cycle of `graph`, if it has one (depth-first search).
+fn cycle(graph: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
+    fn visit(
+        node: &str,
+        graph: &BTreeMap<String, BTreeSet<String>>,
+        path: &mut Vec<String>,
+        done: &mut BTreeSet<String>,
+    ) -> Option<Vec<String>> {
+        if let Some(at) = path.iter().position(|p| p == node) {
+            return Some(path[at..].iter().cloned().chain([node.to_string()]).collect());
+        }
+        if done.contains(node) {
+            return None;
+        }
+        path.push(node.to_string());
+        for next in graph.get(node).into_iter().flatten() {
+            if let Some(found) = visit(next, graph, path, done) {
+                return Some(found);
+            }
+        }
+        path.pop();
+        done.insert(node.to_string());
+        None
+    }
+    let mut done = BTreeSet::new();
+    graph.keys().find_map(|start| visit(start, graph, &mut Vec::new(), &mut done))
+}
+
+#[test]
+fn no_import_cycle_inside_a_floor() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut edges = 0;
+    for floor in ["spectrum", "color", "sampling", "io", "study"] {
+        let graph = floor_graph(&src.join(floor), floor);
+        edges += graph.values().map(BTreeSet::len).sum::<usize>();
+        assert_eq!(cycle(&graph), None, "an import cycle inside {floor}/");
+    }
+    assert!(edges > 50, "found only {edges} imports inside floors");
+}
+
+/// The cycle finder finds a cycle, and only one that is there.
+#[test]
+fn the_cycle_finder_finds_cycles() {
+    let graph = |edges: &[(&str, &str)]| {
+        let mut g: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        for (a, b) in edges {
+            g.entry(a.to_string()).or_default().insert(b.to_string());
+        }
+        g
+    };
+    assert_eq!(cycle(&graph(&[("a", "b"), ("b", "c"), ("a", "c")])), None);
+    let found = cycle(&graph(&[("a", "b"), ("b", "c"), ("c", "b")])).expect("b ↔ c");
+    assert_eq!(found, ["b", "c", "b"]);
 }

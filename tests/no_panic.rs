@@ -7,7 +7,8 @@ use std::num::NonZeroUsize;
 use proptest::prelude::*;
 use rand::SeedableRng;
 use speclab::io::{Format, Load, brace, columns, json, read};
-use speclab::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
+use speclab::sampling::buckets::BucketRule;
+use speclab::sampling::rule::{MAX_M, Rule};
 use speclab::sampling::{hero, reference};
 use speclab::{BoxAverage, HeroSample, Interpolation, RegularSpectrum, Role, TabulatedSpectrum, data};
 
@@ -109,10 +110,10 @@ proptest! {
         terminated.terminate_secondary();
         prop_assert!(terminated.to_xyz(data::lights::F11.sample(&h) * data::patches::A1.sample(&h)).is_finite());
         let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-        for k in [0, 1, 4, 5, usize::MAX] {
+        for k in [0, 1, 4, 5, hero::MAX_WIDTH, hero::MAX_WIDTH + 1, usize::MAX] {
             let (pdf, strata) = (speclab::sampling::pdf::Uniform, speclab::sampling::strata::Strata::None);
-            let result = hero::estimate_dyn(k, &data::lights::A, &data::patches::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
-            prop_assert_eq!(result.is_ok(), hero::WIDTHS.contains(&k));
+            let result = hero::estimate_width(k, &data::lights::A, &data::patches::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
+            prop_assert_eq!(result.is_ok(), (1..=hero::MAX_WIDTH).contains(&k));
         }
     }
 
@@ -120,8 +121,8 @@ proptest! {
     fn bucket_counts_and_huge_values(m in any::<usize>(), scale in any_f64()) {
         let m = NonZeroUsize::new(m).unwrap_or(NonZeroUsize::MIN);
         for rule in BucketRule::ALL {
-            let result = Buckets::new(m.get(), rule).map(|b| b.xyz(&data::lights::A, &data::patches::E2));
-            prop_assert_eq!(result.is_ok(), m.get() <= MAX_BUCKETS);
+            let result = Rule::buckets(m.get(), rule).map(|b| b.xyz(&data::lights::A, &data::patches::E2));
+            prop_assert_eq!(result.is_ok(), m.get() <= MAX_M);
             if let Ok(xyz) = result {
                 prop_assert!(xyz.is_finite());
             }

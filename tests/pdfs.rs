@@ -81,7 +81,7 @@ fn zero_regions_are_never_drawn() {
     for p in [LightPdf::light(&lamp).expect("bright"), LightPdf::balanced(&lamp).expect("bright")] {
         for _ in 0..20_000 {
             let h = HeroSample::<4>::from_pdf(rng.random(), &p);
-            for (&lambda, &w) in h.lambda().iter().zip(h.inv_pdf()) {
+            for (&lambda, w) in h.lambda().iter().zip(h.inv_pdf()) {
                 assert!(lambda > 500.0 && p.pdf(lambda) > 0.0, "drew {lambda} nm, density {}", p.pdf(lambda));
                 assert!(w.is_finite() && w > 0.0);
             }

@@ -123,7 +123,7 @@ fn bad_requests_are_errors() {
     for method in [Method::BOX, Method::FITTED] {
         let beyond = costs(&[(method, 65)]);
         let err = plan::plan_with_costs(&lights, &surfaces, &Request::default(), &beyond).unwrap_err();
-        assert_eq!(err.to_string(), "expected a bucket count from 1 to 64, found 65");
+        assert_eq!(err.to_string(), "expected a fixed rule's size from 1 to 64, found 65");
     }
 }
 

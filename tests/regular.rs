@@ -1,13 +1,14 @@
 //! Regular buckets are exactly the Riemann sums `W/M · Σ valueᵢ · c̄ᵢ`: the
 //! compile-time type `RegularSpectrum<M, B>` against sums written out here
-//! from the definitions, and the run-time `Buckets` (its own loops and
-//! observer tables, computed when made) against the compile-time type, bit
-//! for bit. Bucket values carry a path's throughput with the same
+//! from the definitions, and the run-time `Rule::buckets` (its weights
+//! computed when made, its values on slices) against the compile-time
+//! type, bit for bit. Bucket values carry a path's throughput with the same
 //! arithmetic as sampled spectra.
 
 use speclab::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
 use speclab::data::{Light, Patch, lights, patches};
-use speclab::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
+use speclab::sampling::buckets::BucketRule;
+use speclab::sampling::rule::{MAX_M, Rule, RuleKind};
 use speclab::spectrum::observer;
 use speclab::{BoxAverage, Center, RegularSpectrum, Xyz};
 
@@ -24,7 +25,7 @@ fn close(a: Xyz, b: Xyz) -> bool {
 fn check<const M: usize>() {
     let width = 350.0 / M as f64;
     let (center, boxed) =
-        (Buckets::new(M, BucketRule::Center).unwrap(), Buckets::new(M, BucketRule::BoxAverage).unwrap());
+        (Rule::buckets(M, BucketRule::Center).unwrap(), Rule::buckets(M, BucketRule::BoxAverage).unwrap());
     for light in Light::ALL {
         for patch in Patch::ALL {
             let (l, s) = (light.spectrum(), patch.spectrum());
@@ -61,16 +62,16 @@ fn riemann_sums_for_several_m() {
 
 #[test]
 fn unsupported_bucket_counts_are_errors() {
-    for m in [0, MAX_BUCKETS + 1, usize::MAX] {
-        let err = Buckets::new(m, BucketRule::Center).unwrap_err();
+    for m in [0, MAX_M + 1, usize::MAX] {
+        let err = Rule::buckets(m, BucketRule::Center).unwrap_err();
         assert_eq!(err.to_string(), format!("expected a bucket count from 1 to 64, found {m}"));
     }
-    let one = Buckets::new(1, BucketRule::BoxAverage).unwrap();
-    assert_eq!((one.m(), one.rule()), (1, BucketRule::BoxAverage));
+    let one = Rule::buckets(1, BucketRule::BoxAverage).unwrap();
+    assert_eq!((one.m(), one.kind()), (1, RuleKind::Buckets(BucketRule::BoxAverage)));
     // A factor shorter than M counts as 0 where it has no value.
-    let three = Buckets::new(3, BucketRule::Center).unwrap();
-    let full = three.xyz_of_product(&[&[1.0, 1.0, 1.0]]);
-    let short = three.xyz_of_product(&[&[1.0, 1.0, 1.0], &[1.0, 1.0]]);
+    let three = Rule::buckets(3, BucketRule::Center).unwrap();
+    let full = three.xyz_of_factors(&[&[1.0, 1.0, 1.0]]);
+    let short = three.xyz_of_factors(&[&[1.0, 1.0, 1.0], &[1.0, 1.0]]);
     assert!(short.y < full.y && short.y > 0.0);
 }
 

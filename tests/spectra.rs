@@ -91,7 +91,7 @@ fn smooth_spectra_by_quadrature() {
 fn mixed_spectra_in_a_list() {
     let list: Vec<Box<dyn Spectrum + Send + Sync>> = vec![
         Box::new(patches::F4.clone()),
-        Box::new(DenseSpectrum::new(&patches::F4)),
+        Box::new(DenseSpectrum::<f64>::new(&patches::F4)),
         Box::new(RgbAlbedo::new(LinearSrgb::new(0.1, 0.4, 0.1)).unwrap()),
     ];
     let exact = reference::xyz(&lights::D65, &patches::F4);

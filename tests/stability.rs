@@ -7,8 +7,9 @@ use std::num::NonZeroUsize;
 
 use speclab::Xyz;
 use speclab::data::{Light, Patch};
-use speclab::sampling::buckets::{BucketRule as Rule, Buckets};
+use speclab::sampling::buckets::BucketRule as Rule;
 use speclab::sampling::reference;
+use speclab::sampling::rule::Rule as Buckets;
 use speclab::study::method::{Method, derive_seed};
 use speclab::study::{perceptual, trials, variance};
 
@@ -18,7 +19,7 @@ fn nz(n: usize) -> NonZeroUsize {
 
 fn de00_regular(light: Light, patch: Patch, m: usize, rule: Rule) -> f64 {
     let (l, s) = (light.spectrum(), patch.spectrum());
-    let estimate = Buckets::new(m, rule).expect("1 ≤ M ≤ 64").xyz(l, s);
+    let estimate = Buckets::buckets(m, rule).expect("1 ≤ M ≤ 64").xyz(l, s);
     perceptual::delta_e00(estimate, reference::xyz(l, s), reference::white(l))
 }
 
@@ -34,8 +35,9 @@ fn centre_buckets_are_not_monotone_under_f11() {
     let l = Light::F11.spectrum();
     for patch in Patch::ALL {
         let exact = reference::xyz(l, patch.spectrum()).y;
-        let y_error =
-            |m| (Buckets::new(m, Rule::Center).expect("M").xyz(l, patch.spectrum()).y - exact).abs() / exact;
+        let y_error = |m| {
+            (Buckets::buckets(m, Rule::Center).expect("M").xyz(l, patch.spectrum()).y - exact).abs() / exact
+        };
         let (e8, e16) = (y_error(8), y_error(16));
         eprintln!("F11 {patch:?}: centre |ΔY|/Y at M = 8: {e8:.3}, M = 16: {e16:.3}");
         assert!(e16 > e8, "{patch:?}: M = 16 ({e16}) should be worse than M = 8 ({e8})");

@@ -8,7 +8,8 @@ use std::io::{self, IsTerminal};
 use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
-use speclab::sampling::buckets::MAX_BUCKETS;
+use speclab::sampling::hero::MAX_WIDTH;
+use speclab::sampling::rule::MAX_M;
 
 /// Prints `message` as the program's error and returns exit status 2.
 pub fn fail(program: &str, message: impl std::fmt::Display) -> ExitCode {
@@ -26,8 +27,8 @@ pub fn finish(program: &str, written: io::Result<()>) -> ExitCode {
 
 /// A `--m` value: a bucket count from 1 to 64, or a message saying so.
 pub fn buckets(value: &str) -> Result<NonZeroUsize, String> {
-    let m = value.parse::<usize>().ok().and_then(NonZeroUsize::new).filter(|m| m.get() <= MAX_BUCKETS);
-    m.ok_or_else(|| format!("expected a bucket count from 1 to {MAX_BUCKETS}, found {value:?}"))
+    let m = value.parse::<usize>().ok().and_then(NonZeroUsize::new).filter(|m| m.get() <= MAX_M);
+    m.ok_or_else(|| format!("expected a bucket count from 1 to {MAX_M}, found {value:?}"))
 }
 
 /// A sample count (`--n`, `--trials`): a positive integer, or a message saying so.
@@ -45,9 +46,8 @@ pub fn color() -> bool {
     io::stdout().is_terminal() && truecolor && !no_color
 }
 
-/// A `--k` value: a compiled hero width, or a message naming them.
+/// A `--k` value: a hero width from 1 to 64, or a message saying so.
 pub fn hero_width(value: &str) -> Result<usize, String> {
-    let widths = speclab::sampling::hero::WIDTHS;
-    let k = value.parse::<usize>().ok().filter(|k| widths.contains(k));
-    k.ok_or_else(|| format!("expected a hero width of {widths:?} wavelengths, found {value:?}"))
+    let k = value.parse::<usize>().ok().filter(|k| (1..=MAX_WIDTH).contains(k));
+    k.ok_or_else(|| format!("expected a hero width from 1 to {MAX_WIDTH} wavelengths, found {value:?}"))
 }

@@ -16,6 +16,7 @@ mod output;
 mod paint;
 mod tracer;
 
+use std::marker::PhantomData;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::str::FromStr;
@@ -30,15 +31,15 @@ use speclab::data::{Light, Patch};
 use speclab::sampling::binned::BinnedPdf;
 use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 use speclab::sampling::{reference, strata::Strata};
-use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, RgbAlbedo, Spectrum};
+use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Float, RgbAlbedo, Spectrum};
 use speclab::{LinearSrgb, Role, TabulatedSpectrum, Xyz, io::Load};
 use tracer::{Material, Paint, Rng, Scene};
 
 const USAGE: &str = "\
 usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PATH]
               [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
-              [--bins B | --exact-pdf] [--spectra exact|dense] [--reference N]
-              [--threads T] [--out PATH]
+              [--bins B | --exact-pdf] [--spectra exact|dense] [--precision f64|f32]
+              [--reference N] [--threads T] [--out PATH]
   --width, --height  image size in pixels (default 256 × 256)
   --spp N            paths per pixel (default 32)
   --light NAME       a, d65 (default) or f11; --light-file reads any light
@@ -48,6 +49,7 @@ usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PA
                      (BinnedPdf, default 256); --exact-pdf samples the
                      density itself (inverting its CDF per wavelength)
   --spectra S        exact tabulated spectra (default) or dense 1 nm tables
+  --precision P      the per-sample values' precision, f64 (default) or f32
   --reference N      also render N paths per pixel and print the RMS ΔE*ab
   --threads T        worker threads (default 2)
   --out PATH         the PNG to write (default render.png)";
@@ -83,6 +85,7 @@ struct Args {
     pdf: PdfChoice,
     strata: Strata,
     dense: bool,
+    single: bool,
     /// Bins of the histogram pdf, or `None` for the exact density.
     bins: Option<usize>,
     reference: Option<usize>,
@@ -108,6 +111,7 @@ fn parse_args() -> Result<Args, Box<dyn std::error::Error>> {
         pdf: PdfChoice::Uniform,
         strata: Strata::Jittered,
         dense: false,
+        single: false,
         bins: Some(256),
         reference: None,
         threads: 2,
@@ -135,6 +139,13 @@ fn parse_args() -> Result<Args, Box<dyn std::error::Error>> {
                     "exact" => false,
                     "dense" => true,
                     other => return Err(format!("expected exact or dense spectra, found {other:?}").into()),
+                }
+            }
+            Long("precision") => {
+                a.single = match parser.value()?.string()?.as_str() {
+                    "f64" => false,
+                    "f32" => true,
+                    other => return Err(format!("expected f64 or f32, found {other:?}").into()),
                 }
             }
             Long("bins") => a.bins = Some(parser.value()?.parse_with(|v| positive("bin count", v))?),
@@ -237,9 +248,9 @@ fn render<P: Paint>(scene: &Scene, paint: &P, a: &Args, spp: usize, pass: u64) -
 
 /// Renders spectrally with `light`, `patches` and `observer`, three times per mode
 /// (spectral, grey, spectral, grey, …) keeping each mode's fastest run.
-fn spectral_and_grey<S: Spectrum + Sync, O: speclab::spectrum::Observer + Sync>(
+fn spectral_and_grey<S: Spectrum + Sync, O: speclab::spectrum::Observer + Sync, T: Float>(
     a: &Args,
-    spectral: &Spectral<'_, S, O>,
+    spectral: &Spectral<'_, S, O, T>,
     grey: &Grey,
 ) -> (Render, Render) {
     let scene = scene();
@@ -281,35 +292,63 @@ fn main() -> ExitCode {
         texture: colours.iter().map(|&c| space.xyz(c).y / space.white().y).collect(),
         white,
     };
-    let patches = || Patch::ALL.iter().map(|p| p.spectrum().clone());
-    let (image, grey_run) = if a.dense {
-        let spectral = Spectral {
-            light: DenseSpectrum::new(&a.light),
-            patches: patches().map(|p| DenseSpectrum::new(&p)).collect(),
-            texture: &texture,
-            observer: DenseObserver::new(),
-            pdf: &*pdf,
-        };
-        let (s, g) = spectral_and_grey(&a, &spectral, &grey);
-        report(&a, &s, &g);
-        (reference_error(&a, &spectral, s), g)
-    } else {
-        let spectral = Spectral {
-            light: a.light.clone(),
-            patches: patches().collect(),
-            texture: &texture,
-            observer: Cie1931,
-            pdf: &*pdf,
-        };
-        let (s, g) = spectral_and_grey(&a, &spectral, &grey);
-        report(&a, &s, &g);
-        (reference_error(&a, &spectral, s), g)
+    let image = match (a.dense, a.single) {
+        (false, false) => run::<_, _, f64>(&a, a.light.clone(), patches(), Cie1931, &texture, &*pdf, &grey),
+        (false, true) => run::<_, _, f32>(&a, a.light.clone(), patches(), Cie1931, &texture, &*pdf, &grey),
+        (true, false) => {
+            let dense = |s: &TabulatedSpectrum| DenseSpectrum::<f64>::new(s);
+            let observer = DenseObserver::<f64>::new();
+            run::<_, _, f64>(
+                &a,
+                dense(&a.light),
+                patches().map(|p| dense(&p)),
+                observer,
+                &texture,
+                &*pdf,
+                &grey,
+            )
+        }
+        (true, true) => {
+            let dense = |s: &TabulatedSpectrum| DenseSpectrum::<f32>::new(s);
+            let observer = DenseObserver::<f32>::new();
+            run::<_, _, f32>(
+                &a,
+                dense(&a.light),
+                patches().map(|p| dense(&p)),
+                observer,
+                &texture,
+                &*pdf,
+                &grey,
+            )
+        }
     };
-    drop(grey_run);
     match write_png(&a, &image.xyz, white) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => fail(e),
     }
+}
+
+/// The built-in patches.
+fn patches() -> impl Iterator<Item = TabulatedSpectrum> {
+    Patch::ALL.iter().map(|p| p.spectrum().clone())
+}
+
+/// Renders spectrally (and grey, for the timing) with these spectra,
+/// observer and precision; reports; returns the spectral image.
+fn run<S: Spectrum + Sync, O: speclab::spectrum::Observer + Sync, T: Float>(
+    a: &Args,
+    light: S,
+    patches: impl Iterator<Item = S>,
+    observer: O,
+    texture: &[RgbAlbedo],
+    pdf: &(dyn WavelengthPdf + Sync),
+    grey: &Grey,
+) -> Render {
+    let spectral =
+        Spectral { light, patches: patches.collect(), texture, observer, pdf, precision: PhantomData::<T> };
+    let (s, g) = spectral_and_grey(a, &spectral, grey);
+    report(a, &s, &g);
+    reference_error(a, &spectral, s)
 }
 
 /// The chosen density, as a histogram of `--bins` bins unless

@@ -25,7 +25,12 @@ pub fn report(a: &Args, s: &Render, g: &Render) {
             (_, None) => " (exact)".into(),
         },
         a.strata,
-        if a.dense { "dense" } else { "exact" },
+        match (a.dense, a.single) {
+            (false, false) => "exact f64",
+            (false, true) => "exact f32",
+            (true, false) => "dense f64",
+            (true, true) => "dense f32",
+        },
         a.threads
     );
     println!("spectral: {:.2} s, {} vertices, {ns_s:.1} ns per vertex per thread", s.seconds, s.vertices);

@@ -4,48 +4,53 @@
 
 use speclab::sampling::pdf::WavelengthPdf;
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
-use speclab::spectrum::{Observer, RgbAlbedo};
+use speclab::spectrum::{Float, Observer, RgbAlbedo};
 use speclab::{HeroSample, SampledSpectrum, Spectrum, Xyz};
 
 use crate::tracer::{Material, Paint};
 
-/// Hero samples of four wavelengths, drawn from `pdf`; the light, the
-/// patches (`S`: exact tabulated or dense) and the texture (RGB albedos)
-/// evaluated at them; XYZ through `observer`.
-pub struct Spectral<'a, S, O> {
+/// Hero samples of four wavelengths in precision `T`, drawn from `pdf` and
+/// weighted by `observer`; the light, the patches (`S`: exact tabulated or
+/// dense) and the texture (RGB albedos) evaluated at them.
+pub struct Spectral<'a, S, O, T> {
     pub light: S,
     pub patches: Vec<S>,
     pub texture: &'a [RgbAlbedo],
     pub observer: O,
     pub pdf: &'a (dyn WavelengthPdf + Sync),
+    pub precision: std::marker::PhantomData<T>,
 }
 
-impl<S: Spectrum + Sync, O: Observer + Sync> Paint for Spectral<'_, S, O> {
-    /// The wavelengths, and the luminance weights of their throughput.
-    type Path = (HeroSample<4>, SampledSpectrum<4>);
-    type Value = SampledSpectrum<4>;
+impl<S: Spectrum + Sync, O: Observer + Sync, T: Float> Paint for Spectral<'_, S, O, T> {
+    /// The wavelengths and their weights: one value per path.
+    type Path = HeroSample<4, T>;
+    type Value = SampledSpectrum<4, T>;
 
     #[inline]
     fn path(&self, u: f64) -> Self::Path {
-        let h = HeroSample::from_pdf(u, self.pdf);
-        (h, h.y_weights() * (1.0 / Y_BAR_INTEGRAL))
+        HeroSample::from_pdf_with(T::from_f64(u), self.pdf, &self.observer)
     }
 
-    fn one(&self) -> SampledSpectrum<4> {
-        SampledSpectrum::splat(1.0)
+    fn one(&self) -> Self::Value {
+        SampledSpectrum::splat(T::ONE)
     }
 
-    fn zero(&self) -> SampledSpectrum<4> {
+    fn zero(&self) -> Self::Value {
         SampledSpectrum::zero()
     }
 
     #[inline]
-    fn emission(&self, (h, _): &Self::Path) -> SampledSpectrum<4> {
+    fn scale(&self, v: Self::Value, s: f64) -> Self::Value {
+        v * T::from_f64(s)
+    }
+
+    #[inline]
+    fn emission(&self, h: &Self::Path) -> Self::Value {
         h.sample(&self.light)
     }
 
     #[inline]
-    fn albedo(&self, (h, _): &Self::Path, material: Material, texel: usize) -> SampledSpectrum<4> {
+    fn albedo(&self, h: &Self::Path, material: Material, texel: usize) -> Self::Value {
         match material {
             Material::Patch(i) => h.sample(&self.patches[i]),
             Material::Texture => h.sample(&self.texture[texel]),
@@ -53,15 +58,15 @@ impl<S: Spectrum + Sync, O: Observer + Sync> Paint for Spectral<'_, S, O> {
     }
 
     /// The throughput's luminance relative to a white path's: `y` over ∫ȳ,
-    /// as a dot product with the path's weights.
+    /// a weighted sum with the path's weights.
     #[inline]
-    fn survival(&self, (_, y_weights): &Self::Path, beta: SampledSpectrum<4>) -> f64 {
-        beta.dot(y_weights)
+    fn survival(&self, h: &Self::Path, beta: Self::Value) -> f64 {
+        h.y(beta).to_f64() * (1.0 / Y_BAR_INTEGRAL)
     }
 
     #[inline]
-    fn xyz(&self, (h, _): &Self::Path, radiance: SampledSpectrum<4>) -> Xyz {
-        h.to_xyz_with(&self.observer, radiance)
+    fn xyz(&self, h: &Self::Path, radiance: Self::Value) -> Xyz {
+        h.to_xyz(radiance)
     }
 }
 
@@ -86,6 +91,10 @@ impl Paint for Grey {
 
     fn zero(&self) -> f64 {
         0.0
+    }
+
+    fn scale(&self, v: f64, s: f64) -> f64 {
+        v * s
     }
 
     fn emission(&self, _path: &()) -> f64 {

@@ -124,12 +124,14 @@ pub trait Paint: Sync {
     /// Per-path state: the wavelengths, or nothing.
     type Path: Copy;
     /// A radiance or throughput value.
-    type Value: Copy + Mul<Output = Self::Value> + Mul<f64, Output = Self::Value> + MulAssign + AddAssign;
+    type Value: Copy + Mul<Output = Self::Value> + MulAssign + AddAssign;
     /// A new path's state from its uniform number.
     fn path(&self, u: f64) -> Self::Path;
     /// One, and zero.
     fn one(&self) -> Self::Value;
     fn zero(&self) -> Self::Value;
+    /// `v` times a geometric factor.
+    fn scale(&self, v: Self::Value, s: f64) -> Self::Value;
     /// The light's emission.
     fn emission(&self, path: &Self::Path) -> Self::Value;
     /// A material's albedo (at a texel, for the texture).
@@ -200,7 +202,7 @@ pub fn trace<P: Paint>(
         if cos_surface > 0.0 && cos_light > 0.0 && scene.visible(add(hit.point, scale(n, 1e-6)), on_light) {
             let area = 4.0 * LIGHT_HALF * LIGHT_HALF;
             let geometry = cos_surface * cos_light * area / (std::f64::consts::PI * d2);
-            radiance += beta * albedo * emission * geometry;
+            radiance += paint.scale(beta * albedo * emission, geometry);
         }
         beta *= albedo;
         if depth >= 2 {
@@ -208,7 +210,7 @@ pub fn trace<P: Paint>(
             if rng.next() >= q {
                 break;
             }
-            beta = beta * (1.0 / q);
+            beta = paint.scale(beta, 1.0 / q);
         }
         origin = add(hit.point, scale(n, 1e-6));
         dir = cosine(n, rng);

@@ -64,6 +64,15 @@ pub struct LinearSrgb {
     pub b: f64,
 }
 
+impl Xyz {
+    /// Linear sRGB by the part D matrix, unclamped.
+    #[inline]
+    #[must_use]
+    pub fn to_linear_srgb(self) -> LinearSrgb {
+        LinearSrgb::from(mul(&XYZ_TO_SRGB, self.to_array()))
+    }
+}
+
 impl LinearSrgb {
     /// From components.
     #[inline]

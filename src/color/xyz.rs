@@ -1,5 +1,6 @@
 //! CIE XYZ tristimulus values, with the arithmetic of sums of estimates
-//! (see [`super::triple`]).
+//! (see [`super::triple`]). The conversion to linear sRGB,
+//! [`Xyz::to_linear_srgb`], lives with the colour space (`srgb.rs`).
 //!
 //! ```
 //! use speclab::Xyz;
@@ -7,8 +8,6 @@
 //! assert_eq!(sum / 2.0, Xyz::new(0.75, 1.25, 1.75));
 //! ```
 
-use crate::color::matrix::mul;
-use crate::color::srgb::{LinearSrgb, XYZ_TO_SRGB};
 use crate::color::triple::triple_arithmetic;
 
 /// CIE 1931 XYZ tristimulus values.
@@ -31,13 +30,6 @@ impl Xyz {
     #[must_use]
     pub const fn new(x: f64, y: f64, z: f64) -> Self {
         Xyz { x, y, z }
-    }
-
-    /// Linear sRGB by the part D matrix, unclamped.
-    #[inline]
-    #[must_use]
-    pub fn to_linear_srgb(self) -> LinearSrgb {
-        LinearSrgb::from(mul(&XYZ_TO_SRGB, self.to_array()))
     }
 }
 

@@ -43,13 +43,13 @@ pub struct BinnedPdf {
 
 impl BinnedPdf {
     /// The histogram of `pdf` on `bins` bins of probability `1/bins`, cut at
-    /// `pdf.sample(i/bins)`. An [`Error::BinCount`] for 0 or more than
+    /// `pdf.sample(i/bins)`. An [`Error::Count`] for 0 or more than
     /// [`MAX_BINS`] bins; an [`Error::NoMass`] if the cuts are not strictly
     /// increasing finite wavelengths (a density with no spread, or a
     /// `sample` that is not an inverse CDF).
     pub fn new(pdf: &(impl WavelengthPdf + ?Sized), bins: usize) -> Result<Self, Error> {
         if !(1..=MAX_BINS).contains(&bins) {
-            return Err(Error::BinCount { bins, max: MAX_BINS });
+            return Err(Error::Count { what: "a bin count", found: bins, min: 1, max: MAX_BINS });
         }
         let knots: Box<[f64]> = (0..=bins).map(|i| pdf.sample(i as f64 / bins as f64)).collect();
         let increasing = knots.windows(2).all(|w| w[0].is_finite() && w[1].is_finite() && w[1] > w[0]);

@@ -17,8 +17,8 @@ impl WavelengthPdf for Stuck {
 
 #[test]
 fn bin_counts_and_degenerate_densities_are_errors() {
-    assert!(matches!(BinnedPdf::new(&Uniform, 0), Err(Error::BinCount { bins: 0, max: MAX_BINS })));
-    assert!(matches!(BinnedPdf::new(&Uniform, MAX_BINS + 1), Err(Error::BinCount { .. })));
+    assert!(matches!(BinnedPdf::new(&Uniform, 0), Err(Error::Count { found: 0, max: MAX_BINS, .. })));
+    assert!(matches!(BinnedPdf::new(&Uniform, MAX_BINS + 1), Err(Error::Count { .. })));
     assert_eq!(BinnedPdf::new(&Uniform, MAX_BINS).map(|p| p.len()).ok(), Some(MAX_BINS));
     let one = BinnedPdf::new(&Uniform, 1).unwrap();
     assert!(!one.is_empty() && (one.pdf(400.0) * LAMBDA_WIDTH - 1.0).abs() < 1e-12);

@@ -1,4 +1,4 @@
-//! The least-squares problem behind [`super::fitted::FittedRule`]: choose
+//! The least-squares problem behind [`Rule::fit`](super::rule::Rule::fit): choose
 //! M of the candidate wavelengths (every nm from 380 to 730) and per
 //! channel the weights that best reproduce the exact XYZ of light ×
 //! reflectance over the prior ([`super::prior`]).

@@ -1,5 +1,5 @@
-//! Random wavelengths: `HeroSample<K>`, K wavelengths with a pdf each, and
-//! the Monte Carlo estimator.
+//! Random wavelengths: `HeroSample<K, T>`, K wavelengths drawn together
+//! with their XYZ weights, and the Monte Carlo estimator.
 //!
 //! By default one uniform number `u ∈ [0, 1)` gives the hero wavelength
 //! `λ₀ = 380 + u·W` (W = 350 nm) and `K − 1` rotations `λ₀ + j·W/K`, wrapped
@@ -10,10 +10,14 @@
 //! hands its wavelengths and their pdfs to [`HeroSample::from_wavelengths`],
 //! or its uniform number and a [`WavelengthPdf`] to [`HeroSample::from_pdf`].
 //!
-//! A spectrum evaluated at a sample is a [`SampledSpectrum<K>`]. The sample's
-//! XYZ contribution is `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)` (a wavelength of pdf 0, for
-//! example one [terminated](HeroSample::terminate_secondary), contributes
-//! nothing), and [`estimate`] averages n of them.
+//! A hero sample is a [`SampledWavelengths<K, T>`]: drawing it looks up the
+//! observer once per wavelength and keeps the weights `c̄(λⱼ)/(K·pdfⱼ)`, so
+//! a sample's XYZ contribution `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)` is one weighted sum
+//! (a wavelength of pdf 0, for example one
+//! [terminated](HeroSample::terminate_secondary), contributes nothing).
+//! The exact observer ([`Cie1931`]) is the default; a dense one
+//! (`DenseObserver`) is the fast path ([`HeroSample::with_observer`]).
+//! [`estimate`] averages n samples.
 //!
 //! ```
 //! use rand::{SeedableRng, rngs::StdRng};
@@ -40,20 +44,22 @@ use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::pdf::{Uniform, WavelengthPdf};
 use crate::sampling::strata::Strata;
+use crate::sampling::wavelengths::{SampledWavelengths, dot};
 use crate::spectrum::observer::{self, Cie1931, Observer};
-use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, Spectrum, Wavelengths};
+use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
-/// K wavelengths drawn together (a hero and K − 1 companions), each with
-/// the probability density it was drawn with. The sample keeps each pdf's
-/// reciprocal, `1/pdf` (nm; Mitsuba's "weight"), so that estimates multiply
-/// rather than divide; 0 marks a wavelength that contributes nothing.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HeroSample<const K: usize> {
-    lambda: [f64; K],
-    inv_pdf: [f64; K],
-}
+/// K wavelengths drawn together (a hero and K − 1 companions) with their
+/// weights `c̄(λⱼ)/(K·pdfⱼ)`: a [`SampledWavelengths`] filled by drawing.
+pub type HeroSample<const K: usize, T = f64> = SampledWavelengths<K, T>;
 
-impl<const K: usize> HeroSample<K> {
+/// The usual hero width: four wavelengths per sample.
+pub const USUAL_K: usize = 4;
+
+/// The most wavelengths a sample of a width chosen at run time takes
+/// ([`estimate_width`]).
+pub const MAX_WIDTH: usize = 64;
+
+impl<const K: usize, T: Float> SampledWavelengths<K, T> {
     /// Compile-time guard: a sample has at least one wavelength.
     const NONZERO: () = assert!(K > 0, "HeroSample needs at least one wavelength (K > 0)");
 
@@ -61,19 +67,65 @@ impl<const K: usize> HeroSample<K> {
     pub const UNIFORM_PDF: f64 = 1.0 / LAMBDA_WIDTH;
 
     /// The uniform hero sample for `u`: `λⱼ = 380 + W·((u + j/K) mod 1)`,
-    /// each of pdf `1/W`. Only the fractional part of `u` counts (1.25 acts
-    /// as 0.25 and −0.25 as 0.75); a non-finite `u` acts as 0. Every
+    /// each of pdf `1/W`, weighted by the exact observer. The wavelengths
+    /// are found in fixed point, as a hand-tuned kernel finds them: `u·W`
+    /// rounded down to 2⁻¹⁶ nm, rotated by `W/K` to the same resolution
+    /// (each wavelength stays uniform: a fixed rotation of a uniform
+    /// wavelength is uniform), so their nearest whole nanometres come
+    /// without a conversion. Only the fractional part of `u` counts (1.25
+    /// acts as 0.25 and −0.25 as 0.75); a non-finite `u` acts as 0. Every
     /// wavelength lies in [380, 730) nm.
-    #[inline]
+    #[inline(always)]
     #[must_use]
-    pub fn new(u: f64) -> Self {
+    pub fn new(u: T) -> Self {
+        Self::with_observer(u, &Cie1931)
+    }
+
+    /// [`HeroSample::new`] with the weights of `observer`: a
+    /// `DenseObserver` for the fast path.
+    #[inline(always)]
+    #[must_use]
+    pub fn with_observer(u: T, observer: &impl Observer) -> Self {
         let () = Self::NONZERO;
-        let u = fract(u);
-        let lambda = std::array::from_fn(|j| {
-            let v = u + j as f64 / K as f64;
-            LAMBDA_MIN + LAMBDA_WIDTH * if v >= 1.0 { v - 1.0 } else { v }
-        });
-        HeroSample { lambda, inv_pdf: [LAMBDA_WIDTH; K] }
+        // Positions in 2⁻¹⁶ nm from 380 nm: [0, PERIOD), PERIOD = W·2¹⁶.
+        const PERIOD: u32 = (LAMBDA_WIDTH as u32) << 16;
+        // (The minimum only tells the compiler that p0 < PERIOD, so that the
+        // nearest whole nanometres are known to be in the table.)
+        let p0 = ((fract(u.to_f64()) * f64::from(PERIOD)) as u32).min(PERIOD - 1);
+        let position = |j: usize| {
+            let p = p0 + (u64::from(PERIOD) * j as u64 / K as u64) as u32;
+            if p >= PERIOD { p - PERIOD } else { p }
+        };
+        let p: [u32; K] = std::array::from_fn(position);
+        let lambda = std::array::from_fn(|j| T::from_f64(LAMBDA_MIN + f64::from(p[j]) * (1.0 / 65536.0)));
+        let nearest = std::array::from_fn(|j| ((p[j] + 0x8000) >> 16) as u16);
+        let h = Self::placed(lambda, nearest);
+        Self::weighted(h, [T::from_f64(LAMBDA_WIDTH); K], observer)
+    }
+
+    /// The sample for `u` under the density `pdf`, rotated in primary-sample
+    /// space: `λⱼ = P⁻¹((u + j/K) mod 1)`, so that every `λⱼ` has density p
+    /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased. With
+    /// [`Uniform`] this is [`HeroSample::new`]. `u` is taken as in
+    /// [`HeroSample::new`].
+    #[inline(always)]
+    #[must_use]
+    pub fn from_pdf<P: WavelengthPdf + ?Sized>(u: T, pdf: &P) -> Self {
+        Self::from_pdf_with(u, pdf, &Cie1931)
+    }
+
+    /// [`HeroSample::from_pdf`] with the weights of `observer`.
+    #[inline(always)]
+    #[must_use]
+    pub fn from_pdf_with<P: WavelengthPdf + ?Sized>(u: T, pdf: &P, observer: &impl Observer) -> Self {
+        let () = Self::NONZERO;
+        let u = fract(u.to_f64());
+        let (mut lambda, mut inv_pdf) = ([T::ZERO; K], [T::ZERO; K]);
+        for (j, (l, w)) in lambda.iter_mut().zip(&mut inv_pdf).enumerate() {
+            let (drawn, reciprocal) = pdf.sample_with_inv_pdf(rotation(u, j, K));
+            (*l, *w) = (T::from_f64(drawn), T::from_f64(reciprocal));
+        }
+        Self::weighted(Self::unweighted(lambda), inv_pdf, observer)
     }
 
     /// The sample of wavelengths `lambda` (nm) drawn with densities `pdf`
@@ -81,165 +133,102 @@ impl<const K: usize> HeroSample<K> {
     /// wavelength must be finite and each pdf finite and non-negative with a
     /// finite reciprocal; a pdf of 0 marks a wavelength that contributes
     /// nothing.
-    pub fn from_wavelengths(lambda: [f64; K], pdf: [f64; K]) -> Result<Self, Error> {
+    pub fn from_wavelengths(lambda: [T; K], pdf: [T; K]) -> Result<Self, Error> {
+        Self::from_wavelengths_with(lambda, pdf, &Cie1931)
+    }
+
+    /// [`HeroSample::from_wavelengths`] with the weights of `observer`.
+    pub fn from_wavelengths_with(
+        lambda: [T; K],
+        pdf: [T; K],
+        observer: &impl Observer,
+    ) -> Result<Self, Error> {
         let () = Self::NONZERO;
-        let mut inv_pdf = [0.0; K];
+        let mut inv_pdf = [T::ZERO; K];
         for (index, ((&l, &p), w)) in lambda.iter().zip(&pdf).zip(&mut inv_pdf).enumerate() {
+            let (l, p) = (l.to_f64(), p.to_f64());
             // A pdf so small that its reciprocal overflows is as unusable as ∞.
-            let reciprocal = if p > 0.0 { 1.0 / p } else { 0.0 };
-            if !(l.is_finite() && p.is_finite() && p >= 0.0 && reciprocal.is_finite()) {
+            let reciprocal = T::from_f64(if p > 0.0 { 1.0 / p } else { 0.0 });
+            if !(l.is_finite() && p.is_finite() && p >= 0.0 && reciprocal.to_f64().is_finite()) {
                 return Err(Error::SampleWavelength { index, lambda: l, pdf: p });
             }
             *w = reciprocal;
         }
-        Ok(HeroSample { lambda, inv_pdf })
+        Ok(Self::weighted(Self::unweighted(lambda), inv_pdf, observer))
     }
 
-    /// The sample for `u` under the density `pdf`, rotated in primary-sample
-    /// space: `λⱼ = P⁻¹((u + j/K) mod 1)`, so that every `λⱼ` has density p
-    /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased. With
-    /// [`Uniform`] this is
-    /// [`HeroSample::new`]. `u` is taken as in [`HeroSample::new`].
-    #[inline]
-    #[must_use]
-    pub fn from_pdf<P: WavelengthPdf + ?Sized>(u: f64, pdf: &P) -> Self {
-        let () = Self::NONZERO;
-        let u = fract(u);
-        let (mut lambda, mut inv_pdf) = ([0.0; K], [0.0; K]);
-        for (j, (l, w)) in lambda.iter_mut().zip(&mut inv_pdf).enumerate() {
-            let v = u + j as f64 / K as f64;
-            (*l, *w) = pdf.sample_with_inv_pdf(if v >= 1.0 { v - 1.0 } else { v });
-        }
-        HeroSample { lambda, inv_pdf }
+    /// The sample `h` (wavelengths drawn with reciprocal densities
+    /// `inv_pdf`) with its weights: `c̄(λⱼ)·inv_pdfⱼ/K` from `observer`, and
+    /// `w₀ = inv_pdfⱼ/K`.
+    #[inline(always)]
+    fn weighted(mut h: Self, inv_pdf: [T; K], observer: &impl Observer) -> Self {
+        let cmf = observer.xyz_bar_at(&h);
+        let per_k = T::from_f64(1.0 / K as f64);
+        let s: [T; K] = std::array::from_fn(|j| inv_pdf[j] * per_k);
+        h.weights = [
+            std::array::from_fn(|j| cmf[j][0] * s[j]),
+            std::array::from_fn(|j| cmf[j][1] * s[j]),
+            std::array::from_fn(|j| cmf[j][2] * s[j]),
+            s,
+        ];
+        h
     }
 
-    /// The wavelengths, nm; the hero first.
+    /// The density of each wavelength, 1/nm (0 for a dropped wavelength,
+    /// and for fixed rules, which have none).
     #[inline]
     #[must_use]
-    pub fn lambda(&self) -> &[f64; K] {
-        &self.lambda
-    }
-
-    /// The density of each wavelength, 1/nm (0 for a dropped wavelength).
-    #[inline]
-    #[must_use]
-    pub fn pdf(&self) -> [f64; K] {
-        self.inv_pdf.map(|w| if w > 0.0 { 1.0 / w } else { 0.0 })
+    pub fn pdf(&self) -> [T; K] {
+        let k = T::from_f64(K as f64);
+        self.weights[3].map(|w| if w > T::ZERO { T::ONE / (k * w) } else { T::ZERO })
     }
 
     /// The reciprocal of each wavelength's density, nm (0 for a dropped
-    /// wavelength): what an estimate multiplies by.
+    /// wavelength and for fixed rules).
     #[inline]
     #[must_use]
-    pub fn inv_pdf(&self) -> &[f64; K] {
-        &self.inv_pdf
+    pub fn inv_pdf(&self) -> [T; K] {
+        let k = T::from_f64(K as f64);
+        self.weights[3].map(|w| w * k)
     }
 
     /// Keeps the hero alone (pbrt-v4's `TerminateSecondary`, for dispersion:
     /// a wavelength-dependent path must follow one wavelength). The other
-    /// pdfs become 0, and the hero's is divided by K (its reciprocal
-    /// multiplied), so that its single term `c̄·v₀ / (K·pdf₀/K)` is still an
-    /// unbiased estimate. Doing it twice changes nothing.
+    /// weights become 0, and the hero's are multiplied by K, so that its
+    /// single term `c̄·v₀ / (K·pdf₀/K)` is still an unbiased estimate. Doing
+    /// it twice changes nothing.
     #[inline]
     pub fn terminate_secondary(&mut self) {
         if self.secondary_terminated() {
             return;
         }
-        self.inv_pdf[1..].fill(0.0);
-        self.inv_pdf[0] *= K as f64;
+        let k = T::from_f64(K as f64);
+        for row in &mut self.weights {
+            row[0] *= k;
+            row[1..].fill(T::ZERO);
+        }
     }
 
-    /// True if only the hero contributes (always true for `K = 1`).
+    /// True if only the hero contributes (always true for `K = 1`, and for
+    /// fixed rules, which have no density).
     #[inline]
     #[must_use]
     pub fn secondary_terminated(&self) -> bool {
-        self.inv_pdf[1..].iter().all(|&w| w == 0.0)
-    }
-
-    /// `s` at the sample's wavelengths (what `s.sample(&self)` gives).
-    #[inline(always)]
-    #[must_use]
-    pub fn sample(&self, s: &impl Spectrum) -> SampledSpectrum<K> {
-        s.sample(self)
-    }
-
-    /// The sample's XYZ estimate of a spectrum with values `v`:
-    /// `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)`, with the exact observer. Each wavelength's
-    /// term is formed on its own and the K terms are summed at the end, so
-    /// the work has no chain through the sample.
-    #[inline(always)]
-    #[must_use]
-    pub fn to_xyz(&self, v: SampledSpectrum<K>) -> Xyz {
-        self.to_xyz_with(&Cie1931, v)
-    }
-
-    /// [`HeroSample::to_xyz`] with the matching functions of `observer`
-    /// (the exact [`Cie1931`], or a dense table: `DenseObserver`).
-    #[inline(always)]
-    #[must_use]
-    pub fn to_xyz_with(&self, observer: &impl Observer, v: SampledSpectrum<K>) -> Xyz {
-        let cmf = observer.xyz_bar_lanes(&self.lambda);
-        let terms: [[f64; 3]; K] =
-            std::array::from_fn(|j| cmf[j].map(|c| c * (v.values[j] * self.inv_pdf[j])));
-        Xyz::from(tree_sum(terms)) * (1.0 / K as f64)
-    }
-
-    /// The luminance alone, `Σⱼ ȳ(λⱼ)·vⱼ / (K·pdfⱼ)`: the Y of
-    /// [`HeroSample::to_xyz`] (to rounding), from ȳ's table alone, for
-    /// Russian roulette and other decisions. In the units of `v` times nm,
-    /// like every Y here: divide by
-    /// [`observer::Y_BAR_INTEGRAL`]
-    /// for the luminance of a constant spectrum to come out as that constant.
-    #[inline]
-    #[must_use]
-    pub fn y(&self, v: SampledSpectrum<K>) -> f64 {
-        let y_bar = observer::y_bar_lanes(&self.lambda);
-        let terms: [[f64; 1]; K] = std::array::from_fn(|j| [y_bar[j] * (v.values[j] * self.inv_pdf[j])]);
-        tree_sum(terms)[0] * (1.0 / K as f64)
+        self.weights[3][1..].iter().all(|&w| w == T::ZERO)
     }
 }
 
-impl<const K: usize> HeroSample<K> {
-    /// The weights of [`HeroSample::y`], `ȳ(λⱼ)/(K·pdfⱼ)`: `v.dot(&w)` is
-    /// `y(v)` to rounding, for any `v`. A path keeps its wavelengths, so a
-    /// renderer computes these once per path and each bounce's luminance
-    /// (for Russian roulette) is a dot product of K numbers.
-    ///
-    /// ```
-    /// use speclab::{data::patches, HeroSample};
-    /// let h = HeroSample::<4>::new(0.3);
-    /// let (w, albedo) = (h.y_weights(), patches::F4.sample(&h));
-    /// assert!((albedo.dot(&w) - h.y(albedo)).abs() <= 1e-12 * h.y(albedo));
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn y_weights(&self) -> SampledSpectrum<K> {
-        let y_bar = observer::y_bar_lanes(&self.lambda);
-        SampledSpectrum::new(std::array::from_fn(|j| y_bar[j] * self.inv_pdf[j] * (1.0 / K as f64)))
-    }
-}
-
-/// `Σ terms` pairwise, `(t₀ + t₁) + (t₂ + t₃)`: the additions of
-/// different wavelengths do not wait on each other (the same sum as
-/// `HeroSample::y`'s, term for term, so `y` is `to_xyz`'s Y to the bit).
+/// Rotation `j` of `K` from `u ∈ [0, 1)`: `(u + j/K) mod 1`.
 #[inline(always)]
-fn tree_sum<const K: usize, const D: usize>(mut terms: [[f64; D]; K]) -> [f64; D] {
-    let mut width = 1;
-    while width < K {
-        let mut i = 0;
-        while i + width < K {
-            terms[i] = std::array::from_fn(|c| terms[i][c] + terms[i + width][c]);
-            i += 2 * width;
-        }
-        width *= 2;
-    }
-    if K == 0 { [0.0; D] } else { terms[0] }
+fn rotation(u: f64, j: usize, k: usize) -> f64 {
+    let v = u + j as f64 / k as f64;
+    if v >= 1.0 { v - 1.0 } else { v }
 }
 
 /// `u − ⌊u⌋` in [0, 1), without libm (baseline x86-64 has no rounding
 /// instruction): `u` itself in the usual case of `u ∈ [0, 1)`; otherwise 0
 /// for NaN, ±∞ and magnitudes of 2⁵² and more (which are integers).
-#[inline]
+#[inline(always)]
 fn fract(u: f64) -> f64 {
     if (0.0..1.0).contains(&u) {
         return u;
@@ -258,13 +247,6 @@ fn fract_slow(u: f64) -> f64 {
     let f = if f < 0.0 { f + 1.0 } else { f };
     // −1e-17 + 1 rounds to 1.
     if f < 1.0 { f } else { 0.0 }
-}
-
-impl<const K: usize> Wavelengths<K> for HeroSample<K> {
-    #[inline]
-    fn lambda(&self) -> &[f64; K] {
-        &self.lambda
-    }
 }
 
 /// The mean of `n` one-sample estimates of `light × surface`, wavelengths
@@ -303,35 +285,43 @@ pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>
     sum / n.get() as f64
 }
 
-/// The usual hero width: four wavelengths per sample.
-pub const USUAL_K: usize = 4;
-
-/// The one list of hero widths compiled for a width known only at run
-/// time: [`WIDTHS`], and [`estimate_dyn`]'s dispatch over them.
-macro_rules! hero_widths {
-    ($($k:literal)*) => {
-        /// The hero widths K that [`estimate_dyn`] dispatches to compiled instances.
-        pub const WIDTHS: &[usize] = &[$($k),*];
-
-        /// [`estimate_with`] for a hero width `k` known only at run time:
-        /// dispatches to `HeroSample<K>` for K in [`WIDTHS`], an error otherwise.
-        pub fn estimate_dyn<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
-            k: usize,
-            light: &impl Spectrum,
-            surface: &impl Spectrum,
-            n: NonZeroUsize,
-            pdf: &P,
-            strata: Strata,
-            rng: &mut R,
-        ) -> Result<Xyz, Error> {
-            match k {
-                $($k => Ok(estimate_with::<$k, P, R>(light, surface, n, pdf, strata, rng)),)*
-                _ => Err(Error::HeroWidth { k, widths: WIDTHS }),
-            }
+/// [`estimate_with`] for a hero width `k` chosen at run time (the study's),
+/// through the same weighted sum on slices: `k` wavelengths per sample,
+/// `1 ≤ k ≤` [`MAX_WIDTH`] (else an [`Error::Count`]). The same numbers as
+/// `estimate_with::<K>` to rounding, from the same draws.
+pub fn estimate_width<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
+    k: usize,
+    light: &(impl Spectrum + ?Sized),
+    surface: &(impl Spectrum + ?Sized),
+    n: NonZeroUsize,
+    pdf: &P,
+    strata: Strata,
+    rng: &mut R,
+) -> Result<Xyz, Error> {
+    if !(1..=MAX_WIDTH).contains(&k) {
+        return Err(Error::Count { what: "a hero width", found: k, min: 1, max: MAX_WIDTH });
+    }
+    let (mut lambda, mut rows) = ([0.0; MAX_WIDTH], [[0.0; MAX_WIDTH]; 3]);
+    let (mut light_at, mut surface_at) = ([0.0; MAX_WIDTH], [0.0; MAX_WIDTH]);
+    let lambda = &mut lambda[..k];
+    let (light_at, surface_at) = (&mut light_at[..k], &mut surface_at[..k]);
+    let per_k = 1.0 / k as f64;
+    let mut sum = Xyz::ZERO;
+    for u in strata.points(n.get(), k, rng) {
+        let u = fract(u);
+        for (j, l) in lambda.iter_mut().enumerate() {
+            let (drawn, inv_pdf) = pdf.sample_with_inv_pdf(rotation(u, j, k));
+            let (cmf, s) = (observer::xyz_bar(drawn), inv_pdf * per_k);
+            *l = drawn;
+            (0..3).for_each(|c| rows[c][j] = cmf[c] * s);
         }
-    };
+        light.eval_many(lambda, light_at);
+        surface.eval_many(lambda, surface_at);
+        light_at.iter_mut().zip(surface_at.iter()).for_each(|(l, s)| *l *= s);
+        sum += Xyz::from(rows.each_ref().map(|row| dot(&row[..k], light_at)));
+    }
+    Ok(sum / n.get() as f64)
 }
-hero_widths!(1 2 3 4 8 16);
 
 #[cfg(test)]
 mod tests {

@@ -22,7 +22,29 @@
 
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::piecewise::View;
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, Spectrum, TabulatedSpectrum, observer};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, Samples, Spectrum, observer};
+
+/// A spectrum's samples with their interpolant's polynomials and breaks,
+/// computed as a `TabulatedSpectrum` computes them.
+struct Table<'a> {
+    samples: Samples<'a>,
+    coeffs: Vec<Coeffs>,
+    breaks: Vec<f64>,
+}
+
+impl<'a> Table<'a> {
+    fn of(samples: Samples<'a>) -> Self {
+        let (lambda, bounds) = (samples.lambda, samples.role.bounds());
+        let coeffs = interp::coeffs(samples.interpolation, lambda, samples.values);
+        let breaks = interp::breaks(lambda, &coeffs, bounds);
+        Table { samples, coeffs, breaks }
+    }
+
+    fn view(&self) -> View<'_> {
+        let bounds = self.samples.role.bounds();
+        View { lambda: self.samples.lambda, coeffs: &self.coeffs, breaks: &self.breaks, bounds }
+    }
+}
 
 /// Coefficients of the density on one piece, in `t = λ − start`.
 pub(crate) type Poly = [f64; 7];
@@ -53,7 +75,8 @@ impl PiecewisePdf {
         ends.retain(|&x| x >= a && x <= b);
         ends.sort_by(f64::total_cmp);
         ends.dedup();
-        let view = light.as_tabulated().map(TabulatedSpectrum::view);
+        let table = light.samples().map(Table::of);
+        let view = table.as_ref().map(Table::view);
         let degree = pieces.map(|p| p.degree);
         let polys: Vec<Poly> = ends
             .windows(2)

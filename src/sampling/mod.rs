@@ -1,15 +1,18 @@
 //! Where spectra are looked at, and how their product becomes XYZ.
 //!
-//! - [`HeroSample<K>`]: K random wavelengths with a pdf each (K = 1 is
-//!   plain random sampling, K = 4 the usual hero sampling); a spectrum
-//!   sampled at them is a [`SampledSpectrum<K>`](crate::SampledSpectrum).
-//! - [`RegularSpectrum<M, B>`](RegularSpectrum): M fixed buckets over
+//! - [`SampledWavelengths<K, T>`]: the one noun, K wavelengths with their
+//!   XYZ weights, in `f64` or `f32`; every way of choosing wavelengths
+//!   fills one, and its `to_xyz` is the one estimator.
+//! - [`HeroSample<K, T>`] (that type, drawn): K random wavelengths with a
+//!   pdf each (K = 1 is plain random sampling, K = 4 the usual hero
+//!   sampling); a spectrum sampled at them is a
+//!   [`SampledSpectrum<K, T>`](crate::SampledSpectrum).
+//! - [`RegularSpectrum<M, B, T>`](RegularSpectrum): M fixed buckets over
 //!   380–730 nm, filled by center samples ([`Center`]) or exact bucket means
-//!   ([`BoxAverage`]); [`buckets`]: the two rules, and buckets whose count is
-//!   chosen at run time.
-//! - [`fitted`]: M wavelengths and a 3 × M weight matrix fitted to a
-//!   scene's lights over a reflectance prior ([`prior`]); a renderer uses
-//!   the rule as [`fitted::FittedWavelengths<M>`].
+//!   ([`BoxAverage`]); [`buckets`]: the two rules.
+//! - [`rule::Rule`]: M wavelengths and weights chosen at run time, buckets
+//!   or [`fitted`] to a scene's lights over a reflectance prior
+//!   ([`prior`]); a renderer takes it as a `SampledWavelengths<M, T>`.
 //! - [`pdf`]: wavelength densities (uniform, visible, following a light)
 //!   behind the [`pdf::WavelengthPdf`] trait, and [`binned`]: any of them
 //!   as equal-probability bins, sampled without a search; [`strata`]: how
@@ -77,8 +80,11 @@ mod prepared;
 pub mod prior;
 pub mod reference;
 pub mod regular;
+pub mod rule;
 pub mod strata;
+mod wavelengths;
 
 pub use hero::HeroSample;
 pub use prepared::PreparedLight;
 pub use regular::{BoxAverage, Center, RegularSpectrum};
+pub use wavelengths::SampledWavelengths;

@@ -22,78 +22,72 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use std::sync::Arc;
+use std::borrow::Cow;
 
 use crate::color::Xyz;
 use crate::error::{Error, Field, Invalid, SampleError};
-use crate::spectrum::weights::{self, Weights};
-use crate::spectrum::{Interpolation, Role, Spectrum, TabulatedSpectrum, interp};
+use crate::spectrum::cache::Weights;
+use crate::spectrum::weights;
+use crate::spectrum::{Interpolation, Role, Spectrum, interp};
 use crate::spectrum::{integrate, validate};
 
-/// A light with its exact weights for reflectances on one grid.
-#[derive(Clone, Debug)]
-pub struct PreparedLight<'a> {
-    light: &'a TabulatedSpectrum,
-    weights: Held<'a>,
+/// A light (of any spectrum type `L`) with its exact weights for
+/// reflectances on one grid.
+#[derive(Clone)]
+pub struct PreparedLight<'a, L: Spectrum + ?Sized = dyn Spectrum + Sync> {
+    light: &'a L,
+    /// Kept by the light (borrowed), or computed for this grid.
+    weights: Cow<'a, Weights>,
 }
 
-/// Weights kept by the light (borrowed) or shared with it.
-#[derive(Clone, Debug)]
-enum Held<'a> {
-    Borrowed(&'a Weights),
-    Shared(Arc<Weights>),
-}
-
-impl std::ops::Deref for Held<'_> {
-    type Target = Weights;
-    fn deref(&self) -> &Weights {
-        match self {
-            Held::Borrowed(w) => w,
-            Held::Shared(w) => w,
-        }
+impl<L: Spectrum + ?Sized> std::fmt::Debug for PreparedLight<'_, L> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PreparedLight").field("grid", &self.weights.grid()).finish_non_exhaustive()
     }
 }
 
-impl<'a> PreparedLight<'a> {
+impl<'a, L: Spectrum + ?Sized> PreparedLight<'a, L> {
     /// `light` prepared for reflectances sampled at `grid` (nm, strictly
     /// increasing) and interpolated by `interpolation`: the weights the
-    /// light keeps, if they are for this grid, or computed now (exactly,
-    /// once; about 20 µs for a patch's 36 samples).
-    pub fn for_grid(
-        light: &'a TabulatedSpectrum,
-        grid: &[f64],
-        interpolation: Interpolation,
-    ) -> Result<Self, Error> {
+    /// light keeps in its cache, if they are for this grid, or computed now
+    /// (exactly for a piecewise polynomial light, once; about 20 µs for a
+    /// patch's 36 samples).
+    pub fn for_grid(light: &'a L, grid: &[f64], interpolation: Interpolation) -> Result<Self, Error> {
         validate::validate(grid, &vec![0.0; grid.len()], Role::Reflectance, interpolation)?;
-        Ok(PreparedLight { light, weights: Held::Shared(light.weights(grid, interpolation)) })
+        Ok(PreparedLight { light, weights: weights::for_grid(light, grid, interpolation) })
     }
 
     /// `light` with `weights` it keeps.
-    pub(crate) fn borrowed(light: &'a TabulatedSpectrum, weights: &'a Weights) -> Self {
-        PreparedLight { light, weights: Held::Borrowed(weights) }
+    pub(crate) fn borrowed(light: &'a L, weights: &'a Weights) -> Self {
+        PreparedLight { light, weights: Cow::Borrowed(weights) }
     }
 
-    /// True if `surface` is on this light's grid, with its interpolation.
+    /// The samples of `surface`, if it is a reflectance interpolating
+    /// samples on this light's grid, with its interpolation.
+    fn samples_of<'s>(&self, surface: &'s (impl Spectrum + ?Sized)) -> Option<&'s [f64]> {
+        let s = surface.samples()?;
+        let fits = s.role == Role::Reflectance
+            && s.interpolation == self.weights.interpolation()
+            && s.lambda == self.weights.grid();
+        fits.then_some(s.values)
+    }
+
+    /// True if `surface` is a reflectance on this light's grid, with its
+    /// interpolation.
     #[must_use]
-    pub fn fits(&self, surface: &TabulatedSpectrum) -> bool {
-        surface.interpolation() == self.weights.interpolation() && surface.lambda() == self.weights.grid()
+    pub fn fits(&self, surface: &(impl Spectrum + ?Sized)) -> bool {
+        self.samples_of(surface).is_some()
     }
 
     /// The exact XYZ of the light times `surface`: equal to
     /// [`crate::sampling::reference::xyz`] (to rounding), in O(samples) when
     /// `surface` [fits](PreparedLight::fits), by exact integration otherwise.
     #[must_use]
-    pub fn xyz(&self, surface: &TabulatedSpectrum) -> Xyz {
-        if !self.fits(surface) {
-            return Xyz::from(integrate::xyz_of_product(&[self.light as &dyn Spectrum, surface]));
+    pub fn xyz(&self, surface: &(impl Spectrum + ?Sized)) -> Xyz {
+        match self.samples_of(surface).map(|r| self.xyz_samples(r)) {
+            Some(Ok(xyz)) => xyz,
+            _ => Xyz::from(integrate::xyz_of_product(&[&self.light, &surface])),
         }
-        let r = surface.values();
-        let mut sum = dot(self.weights.samples(), r);
-        let mut scratch = Vec::new();
-        for (k, _) in surface.clean().iter().enumerate().filter(|(_, clean)| !**clean) {
-            self.correct(&mut sum, r, k, surface.coeffs()[k], surface.bounds(), &mut scratch);
-        }
-        Xyz::from(sum)
     }
 
     /// The exact XYZ of the light times the reflectance with samples `r` on
@@ -192,7 +186,7 @@ impl<'a> PreparedLight<'a> {
         }
         let grid = self.weights.grid();
         let exact = weights::segment_exact(
-            &self.light.view(),
+            &self.light,
             [grid[k], grid[k + 1]],
             c,
             bounds,

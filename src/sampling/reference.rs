@@ -15,7 +15,8 @@
 //! reflectance 1 has exactly the white's XYZ, and every sampler (which
 //! draws within 380–730 nm) is unbiased for both.
 //!
-//! **Speed**: for a tabulated light and surface, the light keeps exact
+//! **Speed**: for a tabulated light and surface (or any light with a
+//! cache and reflectance with samples), the light keeps exact
 //! weights for the surface's grid, computed on first use (about 20 µs),
 //! after which each XYZ is a dot product with the reflectance's samples
 //! ([`PreparedLight`]): about 50 ns for a patch. Built-in, cloned, scaled
@@ -33,18 +34,24 @@
 
 use crate::color::Xyz;
 use crate::sampling::PreparedLight;
-use crate::spectrum::{Spectrum, integrate};
+use crate::spectrum::{Role, Spectrum, integrate, weights};
 
-/// XYZ of `light × surface`. For a tabulated light and surface, a dot
-/// product with the light's weights for the surface's grid
-/// ([`PreparedLight`], kept by the light after the first call); otherwise
-/// integration piece by piece. Both exact for piecewise polynomials.
+/// XYZ of `light × surface`. For a light that keeps a [`Cache`] (tables
+/// do) and a reflectance that interpolates samples
+/// ([`Spectrum::samples`]), a dot product with the light's weights for the
+/// surface's grid ([`PreparedLight`], kept by the light after the first
+/// call); otherwise integration piece by piece. Both exact for piecewise
+/// polynomials.
+///
+/// [`Cache`]: crate::spectrum::Cache
 #[must_use]
 pub fn xyz(light: &impl Spectrum, surface: &impl Spectrum) -> Xyz {
-    if let (Some(l), Some(s)) = (light.as_tabulated(), surface.as_tabulated())
-        && let Some(weights) = l.weights_for(s)
+    if let Some(s) = surface.samples()
+        && s.role == Role::Reflectance
+        && let Some(weights) = weights::kept_for(light, s.lambda, s.interpolation)
+        && let Ok(xyz) = PreparedLight::borrowed(light, weights).xyz_samples(s.values)
     {
-        return PreparedLight::borrowed(l, weights).xyz(s);
+        return xyz;
     }
     xyz_of_product(&[light as &dyn Spectrum, surface])
 }

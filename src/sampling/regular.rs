@@ -1,5 +1,6 @@
 //! Fixed wavelength buckets with M known at compile time:
-//! `RegularSpectrum<M, B>`, the renderer's type.
+//! `RegularSpectrum<M, B, T>`, the renderer's type, in `f64` (the default)
+//! or `f32`.
 //!
 //! The range 380–730 nm is cut into `M` equal buckets, and a spectrum
 //! becomes `M` numbers by a rule chosen by a type (see
@@ -8,13 +9,15 @@
 //! - [`Center`]: the value at each bucket center `λᵢ = 380 + (i + ½)·W/M`;
 //! - [`BoxAverage`]: the exact mean of the interpolant over each bucket.
 //!
-//! Values have the same point-wise arithmetic as a `SampledSpectrum` (`+ -
-//! * /` with each other and with scalars, assign forms, `safe_div`,
+//! Values have the same point-wise arithmetic as a `SampledSpectrum`
+//! (`+ - * /` with each other and with scalars, assign forms, `safe_div`,
 //! `clamp`, `exp`, …), so a path's throughput can be carried in buckets
 //! too, and [`RegularSpectrum::to_xyz`] is the Riemann sum
 //! `W/M · Σ valueᵢ · c̄ᵢ`, where `c̄ᵢ` are the matching functions bucketed
-//! the same way: associated constants, computed once per `M` at compile
-//! time. `M = 0` does not compile.
+//! the same way, computed once per `M` at compile time in both precisions
+//! and summed by the one estimator (the buckets as a fixed
+//! [`SampledWavelengths<M, T>`]: [`Bucketing::wavelengths`]). `M = 0` does
+//! not compile.
 //!
 //! On a smooth light both rules converge fast. On F11 center sampling hits or
 //! misses the spikes depending on `M`; box averaging keeps their energy.
@@ -46,20 +49,35 @@
 use std::marker::PhantomData;
 
 use crate::color::Xyz;
-use crate::sampling::buckets::{BucketRule, box_means, center, dot4};
+use crate::sampling::buckets::{BucketRule, box_means, center};
+use crate::sampling::wavelengths::{SampledWavelengths, dot};
 use crate::spectrum::pointwise::pointwise_spectrum;
-use crate::spectrum::{LAMBDA_WIDTH, Spectrum};
+use crate::spectrum::{Float, LAMBDA_WIDTH, Spectrum};
 
 /// A bucket rule as a type, so that values bucketed by different rules
 /// cannot be mixed.
 pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
     /// The rule this type stands for.
     const RULE: BucketRule;
-    /// The matching functions bucketed by this rule, computed at compile
-    /// time: x̄ᵢ, ȳᵢ and z̄ᵢ as three rows (one dot product each).
-    const OBSERVER: [[f64; M]; 3] = observer_rows::<M>(Self::RULE);
+    /// The matching functions bucketed by this rule, `x̄ᵢ`, `ȳᵢ`, `z̄ᵢ`, as
+    /// three rows, computed at compile time (the buckets' weights are these
+    /// times the width `W/M`).
+    const ROWS_F64: &'static [[f64; M]; 3] = &rows::<M>(Self::RULE);
+    /// The same, rounded to `f32`.
+    const ROWS_F32: &'static [[f32; M]; 3] = &rounded(Self::ROWS_F64);
     /// The `M` bucket values of `s`.
     fn buckets<S: Spectrum + ?Sized>(s: &S) -> [f64; M];
+
+    /// The buckets as a fixed set of wavelengths (the centres) with their
+    /// weights. Sampling at it gives centre values: for box buckets, use
+    /// [`RegularSpectrum::box_average`] for the values.
+    #[must_use]
+    fn wavelengths<T: Float>() -> SampledWavelengths<M, T> {
+        let lambda = const { centers::<M>() }.map(T::from_f64);
+        let width = LAMBDA_WIDTH / M as f64;
+        let row = |c: usize| std::array::from_fn(|i| T::from_f64(width * Self::ROWS_F64[c][i]));
+        SampledWavelengths::from_parts(lambda, [row(0), row(1), row(2), [T::ZERO; M]])
+    }
 }
 
 /// Point samples at bucket centers ([`BucketRule::Center`]).
@@ -102,42 +120,60 @@ const fn centers<const M: usize>() -> [f64; M] {
     out
 }
 
-/// `rule`'s bucketed observer as three rows, at compile time.
-const fn observer_rows<const M: usize>(rule: BucketRule) -> [[f64; M]; 3] {
+/// `rule`'s bucketed observer as rows `c̄ᵢ`, at compile time.
+const fn rows<const M: usize>(rule: BucketRule) -> [[f64; M]; 3] {
     let mut out = [[0.0; M]; 3];
     let mut i = 0;
     while i < M {
-        let [x, y, z] = rule.observer(i, M);
-        out[0][i] = x;
-        out[1][i] = y;
-        out[2][i] = z;
+        let w = rule.observer(i, M);
+        let mut c = 0;
+        while c < 3 {
+            out[c][i] = w[c];
+            c += 1;
+        }
         i += 1;
     }
     out
 }
 
-/// A spectrum as `M` equidistant buckets over 380–730 nm, bucketed by `B`.
+/// `rows` rounded to `f32`, at compile time.
+const fn rounded<const M: usize>(rows: &[[f64; M]; 3]) -> [[f32; M]; 3] {
+    let mut out = [[0.0; M]; 3];
+    let mut c = 0;
+    while c < 3 {
+        let mut i = 0;
+        while i < M {
+            out[c][i] = rows[c][i] as f32;
+            i += 1;
+        }
+        c += 1;
+    }
+    out
+}
+
+/// A spectrum as `M` equidistant buckets over 380–730 nm, bucketed by `B`,
+/// in precision `T`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RegularSpectrum<const M: usize, B: Bucketing<M> = Center> {
-    values: [f64; M],
+pub struct RegularSpectrum<const M: usize, B: Bucketing<M> = Center, T: Float = f64> {
+    values: [T; M],
     rule: PhantomData<B>,
 }
 
-impl<const M: usize, B: Bucketing<M>> RegularSpectrum<M, B> {
+impl<const M: usize, B: Bucketing<M>, T: Float> RegularSpectrum<M, B, T> {
     /// Compile-time guard: there is no spectrum of zero buckets.
     const NONZERO: () = assert!(M > 0, "RegularSpectrum needs at least one bucket (M > 0)");
 
-    /// Buckets `s` by the rule `B`.
+    /// Buckets `s` by the rule `B` (in `f64`, rounded to `T`).
     #[inline]
     #[must_use]
     pub fn from_spectrum(s: &impl Spectrum) -> Self {
-        Self::from_values(B::buckets(s))
+        Self::from_values(B::buckets(s).map(T::from_f64))
     }
 
     /// From bucket values directly.
     #[inline]
     #[must_use]
-    pub fn from_values(values: [f64; M]) -> Self {
+    pub fn from_values(values: [T; M]) -> Self {
         let () = Self::NONZERO;
         RegularSpectrum { values, rule: PhantomData }
     }
@@ -145,7 +181,7 @@ impl<const M: usize, B: Bucketing<M>> RegularSpectrum<M, B> {
     /// The bucket values.
     #[inline]
     #[must_use]
-    pub fn values(&self) -> &[f64; M] {
+    pub fn values(&self) -> &[T; M] {
         &self.values
     }
 
@@ -155,18 +191,18 @@ impl<const M: usize, B: Bucketing<M>> RegularSpectrum<M, B> {
         center(i, M)
     }
 
-    /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`: three dot products, each
-    /// with four independent partial sums.
+    /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`: the one weighted sum with the
+    /// bucketed observer, times the width.
     #[inline]
     #[must_use]
     pub fn to_xyz(&self) -> Xyz {
-        let [x, y, z] = &B::OBSERVER;
-        let dot = |row: &[f64; M]| dot4(M, |i| self.values[i] * row[i]);
-        Xyz::new(dot(x), dot(y), dot(z)) * (LAMBDA_WIDTH / M as f64)
+        let [x, y, z] = T::choose(B::ROWS_F32, B::ROWS_F64);
+        let v = &self.values;
+        Xyz::new(dot(x, v).to_f64(), dot(y, v).to_f64(), dot(z, v).to_f64()) * (LAMBDA_WIDTH / M as f64)
     }
 }
 
-impl<const M: usize> RegularSpectrum<M, Center> {
+impl<const M: usize, T: Float> RegularSpectrum<M, Center, T> {
     /// Point samples of `s` at the bucket centers.
     #[must_use]
     pub fn center(s: &impl Spectrum) -> Self {
@@ -174,7 +210,7 @@ impl<const M: usize> RegularSpectrum<M, Center> {
     }
 }
 
-impl<const M: usize> RegularSpectrum<M, BoxAverage> {
+impl<const M: usize, T: Float> RegularSpectrum<M, BoxAverage, T> {
     /// Exact means of `s` over each bucket.
     #[must_use]
     pub fn box_average(s: &impl Spectrum) -> Self {
@@ -182,4 +218,4 @@ impl<const M: usize> RegularSpectrum<M, BoxAverage> {
     }
 }
 
-pointwise_spectrum!([const M: usize, B: Bucketing<M>] RegularSpectrum<M, B>, M, RegularSpectrum::from_values);
+pointwise_spectrum!([const M: usize, B: Bucketing<M>] RegularSpectrum[M, B], M, RegularSpectrum::from_values);

@@ -2,8 +2,9 @@
 //! dense, constant, blackbody, RGB-derived and a renderer's own spectra.
 //!
 //! A spectrum gives its value at any wavelength in nanometres ([`eval`],
-//! and [`eval_many`] for many at once), and its values at K wavelengths
-//! as a [`SampledSpectrum<K>`] ([`sample`]). Everything that integrates or
+//! and [`eval_many`] / [`eval_many_f32`] for many at once), and its values
+//! at K wavelengths as a [`SampledSpectrum<K, T>`] in `f64` or `f32`
+//! ([`sample`]). Everything that integrates or
 //! samples a spectrum takes any `Spectrum`: integration is **exact** where
 //! the spectrum says it is piecewise polynomial ([`pieces`]), and otherwise
 //! by Gauss–Legendre quadrature on pieces of at most 5 nm with more points
@@ -15,8 +16,18 @@
 //! `Box<dyn Spectrum + Send + Sync>` (or `&dyn Spectrum`), and those are
 //! spectra too.
 //!
+//! **Fast paths are capabilities, not types.** Every path the built-in
+//! tables take is open to any spectrum that says what it can do: its
+//! own `sample` (a dense table's one load per wavelength), its exact
+//! [`integral`](Spectrum::integral) in O(1) (box buckets), its polynomial
+//! [`pieces`](Spectrum::pieces) (exact integration), the
+//! [`samples`](Spectrum::samples) it interpolates (the reference as a dot
+//! product, light pdfs from its polynomials), and a [`Cache`] for what is
+//! computed from it once (a light's exact reference weights).
+//!
 //! [`eval`]: Spectrum::eval
 //! [`eval_many`]: Spectrum::eval_many
+//! [`eval_many_f32`]: Spectrum::eval_many_f32
 //! [`sample`]: Spectrum::sample
 //! [`pieces`]: Spectrum::pieces
 //!
@@ -63,8 +74,10 @@
 
 use std::borrow::Cow;
 
+use crate::spectrum::cache::Cache;
+use crate::spectrum::float::{Float, Lanes};
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
-use crate::spectrum::tabulated::TabulatedSpectrum;
+use crate::spectrum::validate::{Interpolation, Role};
 
 /// Where a spectrum is a polynomial: between consecutive `breaks` (nm,
 /// sorted), and below the first and above the last, it is one polynomial of
@@ -77,6 +90,22 @@ pub struct Pieces<'a> {
     pub degree: usize,
 }
 
+/// The samples a spectrum interpolates, and how: the spectrum is the
+/// clamped interpolant of `values` at `lambda` by `interpolation`, within
+/// the bounds of `role`, and zero outside `lambda` (as a
+/// `TabulatedSpectrum` of them would be).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Samples<'a> {
+    /// The wavelengths, nm, strictly increasing.
+    pub lambda: &'a [f64],
+    /// The value at each.
+    pub values: &'a [f64],
+    /// Linear or cubic.
+    pub interpolation: Interpolation,
+    /// What the spectrum is (its clamp bounds).
+    pub role: Role,
+}
+
 /// A spectrum: a value at every wavelength, in nanometres.
 pub trait Spectrum {
     /// The value at `lambda` nm.
@@ -84,22 +113,36 @@ pub trait Spectrum {
 
     /// The values at `lambda`, into `values` (as many as the shorter of
     /// the two). Override it for speed: [`Spectrum::sample`] and every
-    /// estimator evaluate through it.
+    /// estimator in `f64` evaluate through it.
     fn eval_many(&self, lambda: &[f64], values: &mut [f64]) {
         for (v, &l) in values.iter_mut().zip(lambda) {
             *v = self.eval(l);
         }
     }
 
-    /// The values at K wavelengths (a `HeroSample<K>`'s, or a `[f64; K]`).
+    /// [`Spectrum::eval_many`] in `f32`: by default each value is
+    /// evaluated in `f64` and rounded.
+    fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
+        for (v, &l) in values.iter_mut().zip(lambda) {
+            *v = f32::from_f64(self.eval(f64::from(l)));
+        }
+    }
+
+    /// The values at K wavelengths (a hero sample's, a fixed rule's, or a
+    /// `[T; K]`), in the wavelengths' precision `T`. By default through
+    /// [`Spectrum::eval_many`] or [`Spectrum::eval_many_f32`]; a spectrum
+    /// with a faster way overrides it.
     #[inline]
     #[must_use]
-    fn sample<const K: usize>(&self, at: &impl Wavelengths<K>) -> SampledSpectrum<K>
+    fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T>
     where
         Self: Sized,
     {
-        let mut values = [0.0; K];
-        self.eval_many(at.lambda(), &mut values);
+        let mut values = [T::ZERO; K];
+        match T::lanes(at.lambda(), &mut values) {
+            Lanes::F32 { lambda, values } => self.eval_many_f32(lambda, values),
+            Lanes::F64 { lambda, values } => self.eval_many(lambda, values),
+        }
         SampledSpectrum::new(values)
     }
 
@@ -110,9 +153,24 @@ pub trait Spectrum {
         None
     }
 
-    /// The table behind the spectrum, if it is a [`TabulatedSpectrum`]: the
-    /// exact reference and bucket means take faster exact paths for tables.
-    fn as_tabulated(&self) -> Option<&TabulatedSpectrum> {
+    /// The samples the spectrum interpolates, if it is the interpolant of
+    /// samples (a table): the exact reference then takes a light's weights
+    /// for them, and a light pdf their polynomials.
+    fn samples(&self) -> Option<Samples<'_>> {
+        None
+    }
+
+    /// `∫ₐᵇ` of the spectrum (zero if `b ≤ a`), exact, if the spectrum has
+    /// it at hand (a table's running sums: O(1)). `None` (the default)
+    /// makes callers integrate piece by piece.
+    fn integral(&self, _a: f64, _b: f64) -> Option<f64> {
+        None
+    }
+
+    /// Where the spectrum keeps what is computed from it once (as a light:
+    /// its exact reference weights), if it has one: tables do; a
+    /// renderer's own type can hold a [`Cache`] too.
+    fn cache(&self) -> Option<&Cache> {
         None
     }
 }
@@ -129,11 +187,21 @@ macro_rules! forward_spectrum {
             fn eval_many(&self, lambda: &[f64], values: &mut [f64]) {
                 (**self).eval_many(lambda, values);
             }
+            #[inline]
+            fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
+                (**self).eval_many_f32(lambda, values);
+            }
             fn pieces(&self) -> Option<Pieces<'_>> {
                 (**self).pieces()
             }
-            fn as_tabulated(&self) -> Option<&TabulatedSpectrum> {
-                (**self).as_tabulated()
+            fn samples(&self) -> Option<Samples<'_>> {
+                (**self).samples()
+            }
+            fn integral(&self, a: f64, b: f64) -> Option<f64> {
+                (**self).integral(a, b)
+            }
+            fn cache(&self) -> Option<&Cache> {
+                (**self).cache()
             }
         }
     )*};

@@ -1,14 +1,40 @@
-//! The hot path of evaluation: from a wavelength to its segment of an
-//! equidistant table, and the segment's row, in a handful of instructions.
+//! The hot path of evaluation: from a wavelength to its place in a table,
+//! in a handful of instructions, and the crate's one `unsafe` invariant.
 //!
-//! [`UniformLookup`] holds what a lookup needs (first knot, `1/step`, the last
-//! segment) and guarantees, by construction, that every index it produces
-//! is a valid segment of the table it was made for. That guarantee is what
-//! lets [`UniformLookup::segment`] convert and index without checks: the coordinate
-//! is clamped into `[0, last segment]` first (NaN and ±∞ included), so the
-//! conversion is exact and the index in bounds.
+//! - Equidistant tables ([`UniformLookup`]): the segment is one
+//!   multiplication away, clamped into the table (NaN and ±∞ included) so
+//!   that the conversion to an index is exact and the index in bounds;
+//!   [`UniformLookup::row`] returns the segment's row and knot without
+//!   bounds checks. **The invariant**, checked when the lookup is made
+//!   (`UniformLookup::for_table`) and asserted where it is used: the table
+//!   has one row per segment and one knot more. It is the only `unsafe`
+//!   block of the crate.
+//! - The 1 nm grid of dense tables ([`nearest_nm`]): the nearest whole
+//!   nanometre from 380 to 730 nm as an index 0 to 350, or
+//!   [`OUTSIDE`] (351) outside, where dense tables hold a zero. Computed
+//!   once per wavelength when a sample is drawn; looking it up is then one
+//!   load.
 
 use speclab_tables::interp;
+
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+
+/// Entries of a dense table: 351 whole nanometres (380 to 730) and a zero.
+pub(crate) const DENSE_ENTRIES: usize = 352;
+
+/// The index of a wavelength outside 380–730 nm (or NaN) on the dense
+/// grid: the zero entry.
+pub(crate) const OUTSIDE: u16 = 351;
+
+/// The nearest whole nanometre to `lambda` as an index from 380 nm (0 to
+/// 350), or [`OUTSIDE`] for a wavelength outside 380–730 nm or NaN.
+#[inline(always)]
+pub(crate) fn nearest_nm(lambda: f64) -> u16 {
+    let x = lambda - LAMBDA_MIN;
+    // In range, x + ½ lies in [½, 350½]: its integer part is the nearest
+    // whole nanometre (halves round up). NaN fails the test.
+    if x >= 0.0 && lambda <= LAMBDA_MAX { (x + 0.5) as u16 } else { OUTSIDE }
+}
 
 /// An equidistant table's geometry, for O(1) segment lookup.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -34,24 +60,84 @@ impl UniformLookup {
         }
     }
 
-    /// Number of segments this lookup indexes.
-    #[inline(always)]
-    pub(crate) const fn segments(&self) -> usize {
-        self.segments
+    /// The lookup of a table of `rows` (one per segment) on the knots
+    /// `lambda`, if the knots are equidistant and the rows one fewer.
+    pub(crate) const fn for_table(lambda: &[f64], rows: usize) -> Option<UniformLookup> {
+        match UniformLookup::of(lambda) {
+            Some(lookup) if lookup.segments == rows => Some(lookup),
+            _ => None,
+        }
     }
 
-    /// The segment of `lambda`: `⌊(λ − λ₀)/step⌋`, clamped to the table, so
-    /// always `< self.segments()`. Wavelengths outside the support map to the
-    /// end segments; callers zero them.
-    #[inline(always)]
+    /// Segment `⌊(λ − λ₀)/step⌋` of `lambda`, clamped to the table: always
+    /// below the number of segments. (The checked conversion of the cold
+    /// paths; [`UniformLookup::row`] is the hot one.)
+    #[inline]
     pub(crate) fn segment(&self, lambda: f64) -> usize {
+        let x = (lambda - self.first) * self.inv_step;
+        // `as` saturates (NaN becomes 0); the minimum keeps it in the table.
+        (x as usize).min(self.segments - 1)
+    }
+
+    /// Segment `⌊(λ − λ₀)/step⌋` of `lambda`, clamped to the table, and its
+    /// row of `rows` and knot of `knots`. Wavelengths outside the knots map
+    /// to the end segments; callers zero them.
+    ///
+    /// # Panics
+    /// If `rows` has fewer than one row per segment or `knots` no knot
+    /// beyond the last segment (the lookup was made for another table).
+    #[inline(always)]
+    #[allow(unsafe_code)]
+    pub(crate) fn row<R: Copy>(&self, rows: &[R], knots: &[f64], lambda: f64) -> (R, f64) {
+        assert!(rows.len() >= self.segments && knots.len() > self.segments, "a lookup of another table");
         let x = (lambda - self.first) * self.inv_step;
         // Clamped into [0, top]: NaN and −∞ become 0, +∞ becomes top.
         let x = if x > 0.0 { x } else { 0.0 };
         let x = if x < self.top { x } else { self.top };
-        // SAFETY: x is finite and 0 ≤ x ≤ top < segments ≤ i32::MAX (checked
-        // in `of`), so the truncation is representable in i32 (the signed
-        // conversion is the one SSE2 has, also packed).
-        (unsafe { x.to_int_unchecked::<i32>() }) as usize
+        // SAFETY (the crate's one invariant): x is finite and
+        // 0 ≤ x ≤ top < segments ≤ i32::MAX (`of`), so the truncation is
+        // exact in i32 (the signed conversion SSE2 has) and k < segments ≤
+        // rows.len() < knots.len() (asserted above).
+        unsafe {
+            let k = x.to_int_unchecked::<i32>() as usize;
+            (*rows.get_unchecked(k), *knots.get_unchecked(k))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nearest_nm_rounds_and_marks_the_outside() {
+        assert_eq!(nearest_nm(380.0), 0);
+        assert_eq!(nearest_nm(380.49), 0);
+        assert_eq!(nearest_nm(380.5), 1);
+        assert_eq!(nearest_nm(729.6), 350);
+        assert_eq!(nearest_nm(730.0), 350);
+        for outside in [379.999, 730.001, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            assert_eq!(nearest_nm(outside), OUTSIDE, "{outside}");
+        }
+    }
+
+    #[test]
+    fn rows_are_found_and_clamped() {
+        let knots = [0.0, 1.0, 2.0, 3.0];
+        let rows = ['a', 'b', 'c'];
+        let lookup = UniformLookup::for_table(&knots, rows.len()).expect("equidistant");
+        assert_eq!(lookup.row(&rows, &knots, 1.5), ('b', 1.0));
+        assert_eq!(lookup.row(&rows, &knots, -5.0), ('a', 0.0));
+        assert_eq!(lookup.row(&rows, &knots, 99.0), ('c', 2.0));
+        assert_eq!(lookup.row(&rows, &knots, f64::NAN), ('a', 0.0));
+        assert!(UniformLookup::for_table(&knots, 2).is_none());
+        assert!(UniformLookup::for_table(&[0.0, 1.0, 3.0], 2).is_none());
+    }
+
+    #[test]
+    #[should_panic(expected = "a lookup of another table")]
+    fn a_shorter_table_is_refused() {
+        let lookup = UniformLookup::of(&[0.0, 1.0, 2.0, 3.0]).expect("equidistant");
+        let _ = lookup.row(&['a'], &[0.0, 1.0], 2.5);
     }
 }

@@ -7,14 +7,17 @@
 //! - [`TabulatedSpectrum`]: a light, a reflectance or a matching function
 //!   from samples. Its [`Role`] picks the [`Interpolation`] and the value
 //!   bounds. The reference: exact, and the slowest to evaluate.
-//! - [`DenseSpectrum`]: any spectrum resampled every nanometre, one lookup
-//!   per wavelength; [`DenseObserver`], the observer so.
+//! - [`DenseSpectrum`]: any spectrum at every whole nanometre, in `f32` or
+//!   `f64`, one load per wavelength (the fast path); [`DenseObserver`],
+//!   the observer so.
 //! - [`Constant`], [`Blackbody`], [`FnSpectrum`] (a closure), [`Mixture`]
 //!   (a weighted sum: a scene's lights).
 //! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`]: spectra of RGB
 //!   colours (sigmoid polynomials); fitted by `color::upsample`.
 //! - [`SampledSpectrum`]: a spectrum's values at K wavelengths (any
-//!   [`Wavelengths`]), with point-wise arithmetic.
+//!   [`Wavelengths`]), with point-wise arithmetic, in `f64` or `f32`
+//!   ([`Float`]).
+//! - [`Cache`]: where a spectrum keeps what is computed from it once.
 //! - [`validate`]: what makes samples a spectrum (shared with build
 //!   scripts through `speclab_tables`).
 //! - [`observer`]: the CIE 1931 x̄, ȳ, z̄ at any wavelength.
@@ -34,8 +37,10 @@
 //! ```
 
 mod analytic;
+pub(crate) mod cache;
 pub mod data;
 mod dense;
+mod float;
 mod generic;
 pub(crate) mod integrate;
 pub(crate) mod lookup;
@@ -55,8 +60,10 @@ pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
 pub use speclab_tables::validate;
 
 pub use analytic::{Blackbody, Constant, FnSpectrum};
+pub use cache::Cache;
 pub use dense::{DenseObserver, DenseSpectrum};
-pub use generic::{Pieces, Spectrum};
+pub use float::{Float, Lanes};
+pub use generic::{Pieces, Samples, Spectrum};
 pub use mixture::Mixture;
 pub use observer::{Cie1931, Observer};
 pub use product::Product;

@@ -17,9 +17,11 @@
 
 use crate::spectrum::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
 use crate::spectrum::data::{CIE_X_COEFFS, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_COEFFS};
+use crate::spectrum::float::Float;
 use crate::spectrum::interp;
 use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::piecewise::View;
+use crate::spectrum::sampled::Wavelengths;
 use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
@@ -71,10 +73,12 @@ const fn rows() -> [[f64; 12]; SEGMENTS] {
 
 /// Colour matching functions x̄, ȳ, z̄ at K wavelengths at once: the exact
 /// interpolated CIE 1931 observer, [`Cie1931`], or a dense table
-/// (`DenseObserver`). `HeroSample::to_xyz_with` converts with either.
+/// (`DenseObserver`). A hero sample takes its weights from one when it is
+/// drawn.
 pub trait Observer {
-    /// `[x̄, ȳ, z̄]` at each wavelength, nm.
-    fn xyz_bar_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [[f64; 3]; K];
+    /// `[x̄, ȳ, z̄, 0]` at each wavelength of `at`, in its precision (the
+    /// fourth column pads the row to four lanes).
+    fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K];
 }
 
 /// The CIE 1931 2° observer of Appendix 1, interpolated by the clamped
@@ -83,9 +87,14 @@ pub trait Observer {
 pub struct Cie1931;
 
 impl Observer for Cie1931 {
+    /// Evaluated in `f64` at each wavelength and rounded to `T`.
     #[inline(always)]
-    fn xyz_bar_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [[f64; 3]; K] {
-        xyz_bar_lanes(lambda)
+    fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
+        let lambda = at.lambda();
+        std::array::from_fn(|j| {
+            let [x, y, z] = xyz_bar(lambda[j].to_f64());
+            [T::from_f64(x), T::from_f64(y), T::from_f64(z), T::ZERO]
+        })
     }
 }
 
@@ -97,55 +106,34 @@ impl Observer for Cie1931 {
 #[inline(always)]
 #[must_use]
 pub fn xyz_bar(lambda: f64) -> [f64; 3] {
-    xyz_bar_lanes(&[lambda])[0]
-}
-
-/// [`xyz_bar`] at K wavelengths.
-#[inline(always)]
-pub(crate) fn xyz_bar_lanes<const K: usize>(lambda: &[f64; K]) -> [[f64; 3]; K] {
     const FIRST: f64 = CIE_Y_LAMBDA[0];
     const LAST: f64 = CIE_Y_LAMBDA[SEGMENTS];
-    let mut out = [[0.0; 3]; K];
-    for (out, &l) in out.iter_mut().zip(lambda) {
-        let k = LOOKUP.segment(l);
-        // SAFETY: LOOKUP has SEGMENTS segments, one per row of ROWS, and one
-        // fewer than the knots of CIE_Y_LAMBDA; segment() is below that.
-        let (r, knot) = unsafe { (ROWS.get_unchecked(k), *CIE_Y_LAMBDA.get_unchecked(k)) };
-        let t = l - knot;
-        let at = |i: usize| {
-            let p = interp::segment_value([r[i], r[i + 1], r[i + 2], r[i + 3]], t);
-            if p > 0.0 { p } else { 0.0 }
-        };
-        // FIRST ≤ λ ≤ LAST in one comparison (NaN compares false).
-        let inside = (l - FIRST) * (LAST - l) >= 0.0;
-        *out = if inside { [at(0), at(4), at(8)] } else { [0.0; 3] };
-    }
-    out
+    let (r, knot) = LOOKUP.row(&ROWS, &CIE_Y_LAMBDA, lambda);
+    let t = lambda - knot;
+    let at = |i: usize| {
+        let p = interp::segment_value([r[i], r[i + 1], r[i + 2], r[i + 3]], t);
+        if p > 0.0 { p } else { 0.0 }
+    };
+    // FIRST ≤ λ ≤ LAST in one comparison (NaN compares false).
+    let inside = (lambda - FIRST) * (LAST - lambda) >= 0.0;
+    if inside { [at(0), at(4), at(8)] } else { [0.0; 3] }
 }
 
-/// ȳ alone at K wavelengths (the luminance weight): one 32-byte row of
-/// ȳ's coefficients per wavelength, the same values as [`xyz_bar_lanes`]'s
-/// middle column.
-#[inline(always)]
-pub(crate) fn y_bar_lanes<const K: usize>(lambda: &[f64; K]) -> [f64; K] {
-    const FIRST: f64 = CIE_Y_LAMBDA[0];
-    const LAST: f64 = CIE_Y_LAMBDA[SEGMENTS];
-    let mut out = [0.0; K];
-    for (out, &l) in out.iter_mut().zip(lambda) {
-        let k = LOOKUP.segment(l);
-        // SAFETY: as in `xyz_bar_lanes`: k < SEGMENTS = CIE_Y_COEFFS.len().
-        let (c, knot) = unsafe { (*CIE_Y_COEFFS.get_unchecked(k), *CIE_Y_LAMBDA.get_unchecked(k)) };
-        let p = interp::segment_value(c, l - knot);
-        let p = if p > 0.0 { p } else { 0.0 };
-        *out = if (l - FIRST) * (LAST - l) >= 0.0 { p } else { 0.0 };
-    }
-    out
+/// [`xyz_bar`] as a `const fn` (the same values, found by the table's
+/// own evaluation), for tables computed at compile time.
+pub(crate) const fn xyz_bar_const(lambda: f64) -> [f64; 3] {
+    const BOUNDS: [f64; 2] = [0.0, f64::INFINITY];
+    [
+        interp::eval(&CIE_Y_LAMBDA, &CIE_X_COEFFS, BOUNDS, lambda),
+        interp::eval(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, BOUNDS, lambda),
+        interp::eval(&CIE_Y_LAMBDA, &CIE_Z_COEFFS, BOUNDS, lambda),
+    ]
 }
 
-/// The observer's 5 nm grid.
-const LOOKUP: UniformLookup = match UniformLookup::of(&CIE_Y_LAMBDA) {
-    Some(g) if g.segments() == SEGMENTS => g,
-    _ => panic!("the CIE tables are equidistant"),
+/// The observer's 5 nm grid, made for [`ROWS`].
+const LOOKUP: UniformLookup = match UniformLookup::for_table(&CIE_Y_LAMBDA, SEGMENTS) {
+    Some(g) => g,
+    None => panic!("the CIE tables are equidistant"),
 };
 
 #[cfg(test)]
@@ -164,10 +152,10 @@ mod tests {
         }
         assert_eq!(xyz_bar(f64::NAN), [0.0; 3]);
         for i in 0..=8000 {
-            let lambda = [370.0 + i as f64 * 0.05];
-            assert_eq!(y_bar_lanes(&lambda)[0], xyz_bar(lambda[0])[1], "at {lambda:?}");
+            let lambda = 380.0 + i as f64 * 0.05;
+            let (a, b) = (xyz_bar_const(lambda), xyz_bar(lambda));
+            assert!(a.iter().zip(b).all(|(a, b)| (a - b).abs() <= 1e-15), "at {lambda}: {a:?} {b:?}");
         }
-        assert_eq!(y_bar_lanes(&[f64::NAN, 379.9, 780.1]), [0.0; 3]);
     }
 
     /// The constant is the exact integral: a 0.001 nm midpoint sum of ȳ

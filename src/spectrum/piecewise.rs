@@ -27,27 +27,27 @@ impl View<'_> {
     pub(crate) fn eval(&self, x: f64) -> f64 {
         interp::eval(self.lambda, self.coeffs, self.bounds, x)
     }
+}
 
-    /// The breaks strictly inside `(a, b)`.
-    pub(crate) fn breaks_in(&self, a: f64, b: f64) -> &[f64] {
-        let from = self.breaks.partition_point(|&x| x <= a);
-        let to = self.breaks.partition_point(|&x| x < b);
-        &self.breaks[from..to.max(from)]
-    }
+/// The breaks (sorted) strictly inside `(a, b)`.
+fn breaks_in(breaks: &[f64], a: f64, b: f64) -> &[f64] {
+    let from = breaks.partition_point(|&x| x <= a);
+    let to = breaks.partition_point(|&x| x < b);
+    &breaks[from..to.max(from)]
 }
 
 /// Fills `out` with the sorted ends of the pieces of `[a, b] ∩ range`
-/// (the interval's ends and every break of `views` inside). False if the
-/// overlap is empty.
-pub(crate) fn pieces_into(out: &mut Vec<f64>, a: f64, b: f64, range: [f64; 2], views: [&View; 4]) -> bool {
+/// (the interval's ends and every one of `breaks` inside; each sorted).
+/// False if the overlap is empty.
+pub(crate) fn pieces_into(out: &mut Vec<f64>, a: f64, b: f64, range: [f64; 2], breaks: [&[f64]; 4]) -> bool {
     let (a, b) = (a.max(range[0]), b.min(range[1]));
     out.clear();
     if a >= b {
         return false;
     }
     out.extend([a, b]);
-    for v in views {
-        out.extend_from_slice(v.breaks_in(a, b));
+    for b_ in breaks {
+        out.extend_from_slice(breaks_in(b_, a, b));
     }
     out.sort_by(f64::total_cmp);
     out.dedup();

@@ -25,16 +25,16 @@
 
 use std::borrow::Cow;
 use std::fmt;
-use std::sync::{Arc, OnceLock};
 
 use crate::error::Error;
-use crate::spectrum::generic::{Pieces, Spectrum};
+use crate::spectrum::cache::Cache;
+use crate::spectrum::float::Float;
+use crate::spectrum::generic::{Pieces, Samples, Spectrum};
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{self, Interpolation, Role};
-use crate::spectrum::weights::Weights;
 
 /// Precomputed tables of a spectrum, as `speclab_tables::Codegen` writes them for
 /// static data: samples, the coefficients `[c0, c1, c2, c3]` of each
@@ -59,11 +59,11 @@ pub struct Tables {
 /// Samples of a spectrum and the interpolant through them.
 ///
 /// Used as a light, a spectrum keeps the exact reference weights it computes
-/// on first use (see `sampling::reference`), for the grid of the first
-/// reflectance it meets on that path: a built-in light, its clone, a scaled
-/// copy and the same light loaded from a file all take the same path, and
-/// the tables never leave the value that owns them. Equality looks at the
-/// samples and every table of the interpolant (not at what is kept).
+/// on first use in its [`Cache`] (see `sampling::reference`), for the grid
+/// of the first reflectance it meets on that path: a built-in light, its
+/// clone, a scaled copy and the same light loaded from a file all take the
+/// same path. Equality looks at the samples and every table of the
+/// interpolant (not at what is kept).
 #[derive(Clone)]
 pub struct TabulatedSpectrum {
     role: Role,
@@ -78,14 +78,13 @@ pub struct TabulatedSpectrum {
     clean: Cow<'static, [bool]>,
     /// First and last wavelength, nm: the support.
     ends: [f64; 2],
-    /// O(1) segment lookup for equidistant tables. Invariant: when present,
-    /// `lookup.segments() == coeffs.len() == lambda.len() − 1`.
+    /// O(1) segment lookup for equidistant tables (made for `coeffs` and
+    /// `lambda`).
     lookup: Option<UniformLookup>,
     /// The role's clamp interval.
     bounds: [f64; 2],
-    /// As a light: its exact reference weights, computed on first use
-    /// (`weights.rs`).
-    pub(super) weights: OnceLock<Arc<Weights>>,
+    /// As a light: its exact reference weights, computed on first use.
+    cache: Cache,
 }
 
 impl PartialEq for TabulatedSpectrum {
@@ -136,9 +135,9 @@ impl TabulatedSpectrum {
             prefix: Cow::Borrowed(t.prefix),
             clean: Cow::Borrowed(t.clean),
             ends: [t.lambda[0], t.lambda[n - 1]],
-            lookup: UniformLookup::of(t.lambda),
+            lookup: UniformLookup::for_table(t.lambda, t.coeffs.len()),
             bounds: role.bounds(),
-            weights: OnceLock::new(),
+            cache: Cache::new(),
         })
     }
 
@@ -184,9 +183,9 @@ impl TabulatedSpectrum {
             role,
             interpolation,
             ends: [lambda[0], lambda[lambda.len() - 1]],
-            lookup: UniformLookup::of(&lambda),
+            lookup: UniformLookup::for_table(&lambda, coeffs.len()),
             bounds: role.bounds(),
-            weights: OnceLock::new(),
+            cache: Cache::new(),
             lambda: Cow::Owned(lambda),
             values: Cow::Owned(values),
             coeffs: Cow::Owned(coeffs),
@@ -208,12 +207,15 @@ impl TabulatedSpectrum {
         self.eval_lanes(&[lambda])[0]
     }
 
-    /// The spectrum's values at K wavelengths (a `HeroSample<K>`'s, or a
-    /// `[f64; K]`), evaluated side by side.
+    /// The spectrum's values at K wavelengths (a hero sample's, a fixed
+    /// rule's, or a `[T; K]`), evaluated side by side in `f64` (the exact
+    /// interpolant at each wavelength) and rounded to `T`.
     #[inline(always)]
     #[must_use]
-    pub fn sample<const K: usize>(&self, at: &impl Wavelengths<K>) -> SampledSpectrum<K> {
-        SampledSpectrum::new(self.eval_lanes(at.lambda()))
+    pub fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {
+        let at = at.lambda();
+        let values: [f64; K] = self.eval_lanes(&std::array::from_fn(|j| at[j].to_f64()));
+        SampledSpectrum::new(std::array::from_fn(|j| T::from_f64(values[j])))
     }
 
     /// [`TabulatedSpectrum::eval`] at K wavelengths at once.
@@ -235,10 +237,7 @@ impl TabulatedSpectrum {
         let ([first, last], [lo, hi]) = (self.ends, self.bounds);
         let linear = self.interpolation == Interpolation::Linear;
         for (v, &l) in values.iter_mut().zip(lambda) {
-            let k = lookup.segment(l);
-            // SAFETY: k < lookup.segments() == coeffs.len() < knots.len(), by
-            // the invariant of `lookup` (see the field).
-            let (c, knot) = unsafe { (*coeffs.get_unchecked(k), *knots.get_unchecked(k)) };
+            let (c, knot) = lookup.row(coeffs, knots, l);
             let t = l - knot;
             // A linear segment's c2 and c3 are 0: the same value, sooner.
             let p = if linear { c[0] + t * c[1] } else { interp::segment_value(c, t) };
@@ -352,21 +351,6 @@ impl TabulatedSpectrum {
         View { lambda: &self.lambda, coeffs: &self.coeffs, breaks: &self.breaks, bounds: self.bounds }
     }
 
-    /// One polynomial per segment.
-    pub(crate) fn coeffs(&self) -> &[Coeffs] {
-        &self.coeffs
-    }
-
-    /// Per segment: true where no clamp acts.
-    pub(crate) fn clean(&self) -> &[bool] {
-        &self.clean
-    }
-
-    /// The clamp interval of the spectrum's role.
-    pub(crate) fn bounds(&self) -> [f64; 2] {
-        self.bounds
-    }
-
     /// Wavelengths between which the spectrum is one polynomial: the samples
     /// plus the points where the interpolant meets a clamp bound.
     #[must_use]
@@ -387,12 +371,40 @@ impl Spectrum for TabulatedSpectrum {
     }
 
     /// The samples and the clamp crossings; linear (degree 1) or cubic (3).
+    #[inline(always)]
+    fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
+        for (v, &l) in values.iter_mut().zip(lambda) {
+            *v = f32::from_f64(self.eval_lanes(&[f64::from(l)])[0]);
+        }
+    }
+
+    #[inline(always)]
+    fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {
+        TabulatedSpectrum::sample(self, at)
+    }
+
+    /// The samples and the clamp crossings; linear (degree 1) or cubic (3).
     fn pieces(&self) -> Option<Pieces<'_>> {
         Some(Pieces { breaks: Cow::Borrowed(&self.breaks), degree: self.degree() })
     }
 
-    fn as_tabulated(&self) -> Option<&TabulatedSpectrum> {
-        Some(self)
+    fn samples(&self) -> Option<Samples<'_>> {
+        Some(Samples {
+            lambda: &self.lambda,
+            values: &self.values,
+            interpolation: self.interpolation,
+            role: self.role,
+        })
+    }
+
+    /// From the running sums kept with the table: O(1) on an equidistant
+    /// table.
+    fn integral(&self, a: f64, b: f64) -> Option<f64> {
+        Some(if b > a { self.cumulative(b) - self.cumulative(a) } else { 0.0 })
+    }
+
+    fn cache(&self) -> Option<&Cache> {
+        Some(&self.cache)
     }
 }
 

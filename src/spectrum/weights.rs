@@ -23,87 +23,74 @@
 //! differences, so `min(yₖ, yₖ₊₁) − Cₖ·S ≥ 0` and `max(yₖ, yₖ₊₁) + Cₖ·S ≤ 1`,
 //! with S the larger |difference|, clear segment k.
 //!
-//! A light computes its weights once, on first use, and keeps them
-//! (`TabulatedSpectrum::weights`); `sampling::PreparedLight` applies them.
+//! A light computes its weights once, on first use, and keeps them in its
+//! [`Cache`] if it has one (tables do); `sampling::PreparedLight` applies
+//! them. Any piecewise polynomial light has them: the light enters only
+//! through its value and its breaks.
 
-use std::sync::Arc;
+use std::borrow::Cow;
 
+use crate::spectrum::cache::{Weights, stencil};
+use crate::spectrum::generic::Spectrum;
+use crate::spectrum::integrate;
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::observer;
-use crate::spectrum::piecewise::{View, pieces_into};
-use crate::spectrum::quadrature::{gauss, integrate};
-use crate::spectrum::tabulated::TabulatedSpectrum;
+use crate::spectrum::piecewise::pieces_into;
+use crate::spectrum::quadrature::{self, integrate};
 use crate::spectrum::validate::Interpolation;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
-impl TabulatedSpectrum {
-    /// As a light: its exact reference weights for reflectances on `grid`
-    /// interpolated by `interpolation`, computed on first use and kept for
-    /// the first grid asked for; other grids get weights of their own.
-    pub(crate) fn weights(&self, grid: &[f64], interpolation: Interpolation) -> Arc<Weights> {
-        let compute = || Arc::new(Weights::compute(&self.view(), grid, interpolation));
-        let kept = self.weights.get_or_init(compute);
-        if kept.grid() == grid && kept.interpolation() == interpolation {
-            Arc::clone(kept)
-        } else {
-            compute()
-        }
+/// `light`'s exact reference weights for reflectances on `grid`
+/// interpolated by `interpolation`: the ones its cache keeps (computed
+/// there on first use, for the first grid asked for), or computed now for
+/// another grid.
+pub(crate) fn for_grid<'a, L: Spectrum + ?Sized>(
+    light: &'a L,
+    grid: &[f64],
+    interpolation: Interpolation,
+) -> Cow<'a, Weights> {
+    let compute = || Weights::compute(&light, grid, interpolation);
+    if let Some(kept) = light.cache().map(|c| c.weights(compute))
+        && kept.fits(grid, interpolation)
+    {
+        return Cow::Borrowed(kept);
     }
-
-    /// The weights kept by [`TabulatedSpectrum::weights`], if they are for
-    /// reflectances like `surface` (its grid and interpolation).
-    pub(crate) fn weights_for(&self, surface: &TabulatedSpectrum) -> Option<&Weights> {
-        let kept = self.weights.get_or_init(|| {
-            Arc::new(Weights::compute(&self.view(), surface.lambda(), surface.interpolation()))
-        });
-        let fits = kept.grid() == surface.lambda() && kept.interpolation() == surface.interpolation();
-        fits.then_some(kept)
-    }
+    Cow::Owned(compute())
 }
 
-/// Exact weights of one light for reflectances on one grid.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Weights {
-    /// The reflectances' wavelengths, nm.
-    grid: Vec<f64>,
-    /// The reflectances' interpolation.
-    cubic: bool,
-    /// The integration range: 380–730 nm ∩ the light's and the grid's support.
-    range: [f64; 2],
-    /// Per sample, per channel.
-    samples: Vec<[f64; 3]>,
-    /// Per segment, per stencil sample (4; linear uses 2), per channel.
-    segments: Vec<[[f64; 3]; 4]>,
-    /// Per segment: the stencil vectors giving the cubic's inner Bernstein
-    /// coefficients b₁ and b₂ (b₀ and b₃ are the segment's samples).
-    hull: Vec<[[f64; 4]; 2]>,
-    /// Per segment: the |coefficient sum| turning the stencil's two second
-    /// divided differences into a bound on the inner Bernstein coefficients'
-    /// distance from the linear interpolation (0 for linear grids).
-    margins: Vec<f64>,
+/// The weights `light` keeps in its cache (computing them there for `grid`
+/// if it keeps none yet), if they are for reflectances on `grid`
+/// interpolated by `interpolation`.
+pub(crate) fn kept_for<'a, L: Spectrum + ?Sized>(
+    light: &'a L,
+    grid: &[f64],
+    interpolation: Interpolation,
+) -> Option<&'a Weights> {
+    let kept = light.cache()?.weights(|| Weights::compute(&light, grid, interpolation));
+    kept.fits(grid, interpolation).then_some(kept)
 }
 
 impl Weights {
-    /// The weights of `light` for reflectances interpolated by `interpolation`
-    /// on `grid` (strictly increasing, enough samples).
-    pub(crate) fn compute(light: &View, grid: &[f64], interpolation: Interpolation) -> Self {
+    /// The weights of `light` for reflectances interpolated by
+    /// `interpolation` on `grid` (strictly increasing, enough samples):
+    /// exact for a piecewise polynomial light, by quadrature for others
+    /// (as `integrate.rs` integrates them).
+    pub(crate) fn compute(light: &dyn Spectrum, grid: &[f64], interpolation: Interpolation) -> Self {
+        let (breaks, rule) = light_rule(light);
         let cmf = &observer::views();
         let cubic = interpolation == Interpolation::Cubic;
         let n = grid.len();
-        let range = [
-            LAMBDA_MIN.max(light.lambda[0]).max(grid[0]),
-            LAMBDA_MAX.min(light.lambda[light.lambda.len() - 1]).min(grid[n - 1]),
-        ];
+        let range = [LAMBDA_MIN.max(grid[0]), LAMBDA_MAX.min(grid[n - 1])];
+        let breaks = [&breaks[..], cmf[0].breaks, cmf[1].breaks, cmf[2].breaks];
         let mut scratch = Vec::new();
         let segments: Vec<[[f64; 3]; 4]> = (0..n - 1)
             .map(|k| {
                 let (s, width) = stencil(cubic, k, n);
                 let nodes = &grid[s..s + width];
-                if !pieces_into(&mut scratch, grid[k], grid[k + 1], range, [light, &cmf[0], &cmf[1], &cmf[2]])
-                {
+                if !pieces_into(&mut scratch, grid[k], grid[k + 1], range, breaks) {
                     return [[0.0; 3]; 4];
                 }
-                let flat: [f64; 12] = integrate(gauss(5), &scratch, |x| {
+                let flat: [f64; 12] = integrate(rule, &scratch, |x| {
                     let (basis, l) = (lagrange(nodes, x), light.eval(x));
                     let c = [cmf[0].eval(x), cmf[1].eval(x), cmf[2].eval(x)].map(|c| c * l);
                     std::array::from_fn(|i| c[i % 3] * basis[i / 3])
@@ -124,59 +111,18 @@ impl Weights {
         let margins = if cubic { margins(grid, &hull) } else { vec![0.0; n - 1] };
         Weights { grid: grid.to_vec(), cubic, range, samples, segments, hull, margins }
     }
-
-    /// The reflectances' wavelengths, nm.
-    #[must_use]
-    pub(crate) fn grid(&self) -> &[f64] {
-        &self.grid
-    }
-
-    /// The reflectances' interpolation.
-    #[must_use]
-    pub(crate) fn interpolation(&self) -> Interpolation {
-        if self.cubic { Interpolation::Cubic } else { Interpolation::Linear }
-    }
-
-    /// The integration range, nm.
-    pub(crate) fn range(&self) -> [f64; 2] {
-        self.range
-    }
-
-    /// One weight per sample and channel.
-    pub(crate) fn samples(&self) -> &[[f64; 3]] {
-        &self.samples
-    }
-
-    /// Segment `k`'s weights per stencil sample, and where its stencil starts.
-    pub(crate) fn segment(&self, k: usize) -> (&[[f64; 3]], usize) {
-        let (s, width) = stencil(self.cubic, k, self.grid.len());
-        (&self.segments[k][..width], s)
-    }
-
-    /// Segment `k`'s Bernstein stencil vectors (cubic grids).
-    pub(crate) fn hull(&self) -> &[[[f64; 4]; 2]] {
-        &self.hull
-    }
-
-    /// Per segment, the margin `Cₖ` of `min(yₖ, yₖ₊₁) − Cₖ·S ≥ 0`, with S
-    /// the larger |second divided difference| of the segment's stencil.
-    pub(crate) fn margins(&self) -> &[f64] {
-        &self.margins
-    }
-
-    /// For an equidistant grid of step h, the step (margins divided by
-    /// `2h²` apply to plain second differences `y₀ − 2y₁ + y₂`, which are
-    /// `2h²·[x₀, x₁, x₂]y`). `None` for other grids.
-    pub(crate) fn step(&self) -> Option<f64> {
-        let g = &self.grid;
-        let h = (g[g.len() - 1] - g[0]) / (g.len() - 1) as f64;
-        g.windows(2).all(|w| ((w[1] - w[0]) - h).abs() <= 1e-9 * h).then_some(h)
-    }
 }
 
-/// The stencil of segment `k` of `n` samples: first sample and width.
-fn stencil(cubic: bool, k: usize, n: usize) -> (usize, usize) {
-    if cubic { (interp::stencil(k, n), 4) } else { (k, 2) }
+/// The light's breaks and the rule that integrates it times a cubic and a
+/// matching function exactly on each piece (at least 5 points; for a light
+/// that is not piecewise polynomial, [`integrate::SMOOTH_EXTRA`] degrees
+/// more, on pieces of at most 5 nm between the observer's breaks).
+fn light_rule(light: &dyn Spectrum) -> (Cow<'_, [f64]>, &'static quadrature::GaussRule) {
+    let (breaks, degree) = match light.pieces() {
+        Some(p) => (p.breaks, p.degree),
+        None => (Cow::Borrowed(&[][..]), integrate::SMOOTH_EXTRA),
+    };
+    (breaks, quadrature::gauss(((degree + 6) / 2 + 1).max(5)))
 }
 
 /// The Lagrange basis through `nodes` (2 or 4 of them) at `x`; unused
@@ -260,7 +206,7 @@ fn margins(grid: &[f64], hull: &[[[f64; 4]; 2]]) -> Vec<f64> {
 /// `bounds`: pieces between the breaks of the light, the observer and the
 /// clamp's crossings. `scratch` is reused between calls.
 pub(crate) fn segment_exact(
-    light: &View,
+    light: &dyn Spectrum,
     [knot, next]: [f64; 2],
     c: Coeffs,
     bounds: [f64; 2],
@@ -268,7 +214,9 @@ pub(crate) fn segment_exact(
     scratch: &mut Vec<f64>,
 ) -> [f64; 3] {
     let cmf = &observer::views();
-    if !pieces_into(scratch, knot, next, range, [light, &cmf[0], &cmf[1], &cmf[2]]) {
+    let (breaks, rule) = light_rule(light);
+    let breaks = [&breaks[..], cmf[0].breaks, cmf[1].breaks, cmf[2].breaks];
+    if !pieces_into(scratch, knot, next, range, breaks) {
         return [0.0; 3];
     }
     let (a, b) = (scratch[0], scratch[scratch.len() - 1]);
@@ -276,7 +224,7 @@ pub(crate) fn segment_exact(
     scratch.extend(crossings[..count].iter().map(|t| knot + t).filter(|&x| x > a && x < b));
     scratch.sort_by(f64::total_cmp);
     scratch.dedup();
-    integrate(gauss(5), scratch, |x| {
+    integrate(rule, scratch, |x| {
         let r = interp::clamp(interp::segment_value(c, x - knot), bounds);
         let lr = light.eval(x) * r;
         [cmf[0].eval(x) * lr, cmf[1].eval(x) * lr, cmf[2].eval(x) * lr]

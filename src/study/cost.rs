@@ -29,7 +29,7 @@ use std::time::Instant;
 use rand::SeedableRng;
 use rand::rngs::StdRng;
 
-use crate::sampling::buckets::Buckets;
+use crate::sampling::rule::Rule;
 use crate::spectrum::TabulatedSpectrum;
 use crate::study::error::StudyError;
 use crate::study::fits;
@@ -83,38 +83,27 @@ pub fn measure(
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
 ) -> Result<Cost, StudyError> {
-    if config.method == Method::Fitted {
-        return fitted(config.count.get(), light, surface);
-    }
-    let Method::Buckets { rule } = config.method else {
-        let method = config.method;
-        let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
-        let prepared = method.prepare(light)?;
-        let mut rng = StdRng::seed_from_u64(0x5EED);
-        let per_estimate_ns =
-            median_ns(|| drop(black_box(prepared.xyz_with_rng(surface, config.count, &mut rng))));
-        return Ok(Cost { per_estimate_ns, preparation_ns });
+    let m = config.count.get();
+    let rule = match config.method {
+        Method::Fitted => fits::for_lights(&[light])?.rule(m)?.clone(),
+        Method::Buckets { rule } => Rule::buckets(m, rule)?,
+        method => {
+            let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
+            let prepared = method.prepare(light)?;
+            let mut rng = StdRng::seed_from_u64(0x5EED);
+            let per_estimate_ns =
+                median_ns(|| drop(black_box(prepared.xyz_with_rng(surface, config.count, &mut rng))));
+            return Ok(Cost { per_estimate_ns, preparation_ns });
+        }
     };
-    let buckets = Buckets::new(config.count.get(), rule)?;
-    let (mut l, mut s) = (vec![0.0; buckets.m()], vec![0.0; buckets.m()]);
-    let preparation_ns = median_ns(|| {
-        rule.values_into(black_box(light), &mut l);
-        rule.values_into(black_box(surface), &mut s);
-        black_box((&l, &s));
-    });
-    let per_estimate_ns = median_ns(|| {
-        black_box(buckets.xyz_of_product(&[black_box(&l), black_box(&s)]));
-    });
-    Ok(Cost { per_estimate_ns, preparation_ns })
+    Ok(fixed(&rule, light, surface))
 }
 
-/// The cost of a fitted rule of `m` wavelengths: preparation evaluates the
-/// light and the surface at its wavelengths (the fit itself is once per
+/// The cost of a fixed rule (buckets or fitted): preparation takes the
+/// light's and the surface's values for it (a fit itself is once per
 /// scene's lights, tens of milliseconds, and not counted); an estimate
 /// multiplies and weights the stored values.
-fn fitted(m: usize, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Result<Cost, StudyError> {
-    let fits = fits::for_lights(&[light])?;
-    let rule = fits.rule(m)?;
+fn fixed(rule: &Rule, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Cost {
     let (mut l, mut s) = (vec![0.0; rule.m()], vec![0.0; rule.m()]);
     let preparation_ns = median_ns(|| {
         rule.values_into(black_box(light), &mut l);
@@ -124,7 +113,7 @@ fn fitted(m: usize, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> R
     let per_estimate_ns = median_ns(|| {
         black_box(rule.xyz_of_factors(&[black_box(&l), black_box(&s)]));
     });
-    Ok(Cost { per_estimate_ns, preparation_ns })
+    Cost { per_estimate_ns, preparation_ns }
 }
 
 /// The median over 7 timings of `f`'s duration, ns, after a warm-up; each

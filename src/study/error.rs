@@ -27,10 +27,12 @@ pub enum StudyError {
         /// The budget given.
         value: f64,
     },
-    /// A path depth outside 1 ..= `MAX_DEPTH`.
+    /// A path depth outside 1 ..= `max`.
     Depth {
         /// What was given.
         found: String,
+        /// The deepest path studied.
+        max: usize,
     },
 }
 
@@ -44,12 +46,8 @@ impl fmt::Display for StudyError {
             StudyError::Budget { value } => {
                 write!(f, "expected a finite positive ΔE00 budget, found {value}")
             }
-            StudyError::Depth { found } => {
-                write!(
-                    f,
-                    "expected a path depth from 1 to {}, found {found:?}",
-                    crate::study::scene::MAX_DEPTH
-                )
+            StudyError::Depth { found, max } => {
+                write!(f, "expected a path depth from 1 to {max}, found {found:?}")
             }
         }
     }

@@ -14,29 +14,29 @@
 use std::sync::{Arc, Mutex, OnceLock};
 
 use crate::error::Error;
-use crate::sampling::fitted::{FitProblem, FittedRule, MAX_NODES};
+use crate::sampling::fitted::FitProblem;
+use crate::sampling::rule::{MAX_M, Rule, check_m};
 use crate::spectrum::{Spectrum, TabulatedSpectrum};
 
 /// One set of lights' problem and its rules by M.
 pub struct Fits {
     problem: FitProblem,
-    rules: [OnceLock<FittedRule>; MAX_NODES],
+    rules: [OnceLock<Rule>; MAX_M],
 }
 
 impl std::fmt::Debug for Fits {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let fitted: Vec<usize> = (1..=MAX_NODES).filter(|&m| self.rules[m - 1].get().is_some()).collect();
+        let fitted: Vec<usize> = (1..=MAX_M).filter(|&m| self.rules[m - 1].get().is_some()).collect();
         f.debug_struct("Fits").field("fitted", &fitted).finish_non_exhaustive()
     }
 }
 
 impl Fits {
     /// The rule of `m` wavelengths, fitted on first use; an
-    /// [`Error::NodeCount`] unless `1 ≤ m ≤` [`MAX_NODES`].
-    pub fn rule(&self, m: usize) -> Result<&FittedRule, Error> {
-        let cell =
-            m.checked_sub(1).and_then(|i| self.rules.get(i)).ok_or(Error::NodeCount { m, max: MAX_NODES })?;
-        Ok(cell.get_or_init(|| self.problem.rule(m)))
+    /// [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`].
+    pub fn rule(&self, m: usize) -> Result<&Rule, Error> {
+        check_m("a fitted wavelength count", m)?;
+        Ok(self.rules[m - 1].get_or_init(|| self.problem.rule(m)))
     }
 }
 
@@ -51,7 +51,7 @@ fn key(lights: &[&TabulatedSpectrum]) -> Vec<u64> {
 }
 
 /// The fits for `lights` (a scene's set), from the process's cache (the
-/// last eight sets asked for); an error as [`FittedRule::fit`]'s.
+/// last eight sets asked for); an error as [`Rule::fit`]'s.
 pub fn for_lights(lights: &[&TabulatedSpectrum]) -> Result<Arc<Fits>, Error> {
     static CACHE: Mutex<Vec<(Vec<u64>, Arc<Fits>)>> = Mutex::new(Vec::new());
     let key = key(lights);
@@ -61,7 +61,7 @@ pub fn for_lights(lights: &[&TabulatedSpectrum]) -> Result<Arc<Fits>, Error> {
     }
     let spectra: Vec<&dyn Spectrum> = lights.iter().map(|&l| l as &dyn Spectrum).collect();
     let fits =
-        Arc::new(Fits { problem: FitProblem::new(&spectra)?, rules: [const { OnceLock::new() }; MAX_NODES] });
+        Arc::new(Fits { problem: FitProblem::new(&spectra)?, rules: [const { OnceLock::new() }; MAX_M] });
     if let Ok(mut cache) = CACHE.lock() {
         if cache.len() == 8 {
             cache.remove(0);

@@ -7,15 +7,15 @@
 //! | `hero` | n × K (hero + K − 1 rotations; K = 4 by default) | n |
 //! | `regular-center` | M bucket centers | M |
 //! | `regular-box` | M bucket means | M |
-//! | `fitted` | M wavelengths fitted to the light ([`FittedRule`]) | M |
+//! | `fitted` | M wavelengths fitted to the light ([`Rule::fit`]) | M |
 //!
 //! Random and hero draw their wavelengths as their [`Sampling`] says (a pdf
 //! and a strata; uniform and independent by default, as the assignment).
 //! They draw from `StdRng::seed_from_u64(seed)`, so a seed fixes the
 //! result. Use [`derive_seed`] to give independent runs their own seeds.
-//! Buckets take any M from 1 to [`MAX_BUCKETS`] at run time
-//! ([`Buckets`]), with the same numbers as `RegularSpectrum<M>`; fitted
-//! rules any M up to [`MAX_NODES`], fitted to the prepared light once per
+//! Buckets take any M from 1 to [`MAX_M`] at run time
+//! ([`Rule::buckets`]), with the same numbers as `RegularSpectrum<M>`;
+//! fitted rules any M up to [`MAX_M`], fitted to the prepared light once per
 //! process ([`crate::study::fits`]).
 //!
 //! Every method estimates a path of any [`Depth`]: light × surface^depth.
@@ -44,11 +44,11 @@ use rand::{Rng, SeedableRng};
 
 use crate::color::Xyz;
 use crate::error::Error;
-use crate::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
-use crate::sampling::fitted::{FittedRule, MAX_NODES};
+use crate::sampling::buckets::BucketRule;
 use crate::sampling::hero::{self, USUAL_K};
 use crate::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 use crate::sampling::reference;
+use crate::sampling::rule::{MAX_M, Rule};
 use crate::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::study::error::StudyError;
 use crate::study::fits::{self, Fits};
@@ -65,20 +65,20 @@ pub enum Method {
         /// Their pdf and strata.
         sampling: Sampling,
     },
-    /// n hero samples of `k` wavelengths (`HeroSample<k>`, k in
-    /// [`hero::WIDTHS`]).
+    /// n hero samples of `k` wavelengths (`HeroSample<k>`, k from 1 to
+    /// [`hero::MAX_WIDTH`]).
     Hero {
         /// Wavelengths per sample.
         k: usize,
         /// Their pdf and strata.
         sampling: Sampling,
     },
-    /// M buckets (`RegularSpectrum<M, B>`; [`Buckets`] at run time).
+    /// M buckets (`RegularSpectrum<M, B>`; [`Rule::buckets`] at run time).
     Buckets {
         /// Center samples or box means.
         rule: BucketRule,
     },
-    /// M wavelengths and weights fitted to the light ([`FittedRule`]).
+    /// M wavelengths and weights fitted to the light ([`Rule::fit`]).
     Fitted,
 }
 
@@ -152,8 +152,8 @@ impl Method {
     }
 
     /// The counts a sequence studies: powers of two up to `max_n` for
-    /// random and hero, every M up to [`MAX_BUCKETS`] for buckets and
-    /// [`MAX_NODES`] for fitted rules, none for the reference.
+    /// random and hero, every M up to [`MAX_M`] for buckets and fitted
+    /// rules, none for the reference.
     #[must_use]
     pub fn counts(self, max_n: usize) -> Vec<usize> {
         match self {
@@ -162,8 +162,7 @@ impl Method {
                     .take_while(|&n| n <= max_n)
                     .collect()
             }
-            Method::Buckets { .. } => (1..=MAX_BUCKETS).collect(),
-            Method::Fitted => (1..=MAX_NODES).collect(),
+            Method::Buckets { .. } | Method::Fitted => (1..=MAX_M).collect(),
             Method::Reference => Vec::new(),
         }
     }
@@ -181,7 +180,7 @@ impl Method {
 
     /// XYZ of `light × surface` by this method with `samples` samples or
     /// buckets. Errors for a hero width or bucket count that is not compiled
-    /// ([`hero::WIDTHS`], 1 to [`MAX_BUCKETS`]), and for a pdf that cannot
+    /// (1 to [`hero::MAX_WIDTH`], 1 to [`MAX_M`]), and for a pdf that cannot
     /// follow the light.
     pub fn xyz(
         self,
@@ -243,7 +242,7 @@ impl Prepared<'_> {
     }
 
     /// The fitted rule of `m` wavelengths, for a fitted method.
-    pub fn rule(&self, m: usize) -> Result<Option<&FittedRule>, StudyError> {
+    pub fn rule(&self, m: usize) -> Result<Option<&Rule>, StudyError> {
         Ok(match &self.fits {
             Some(f) => Some(f.rule(m)?),
             None => None,
@@ -292,10 +291,16 @@ impl Prepared<'_> {
         }
         Ok(match self.method {
             Method::Reference => reference::xyz(light, surface),
-            Method::Random { sampling } => with_pdf!(sampling.pdf, |pdf| Ok::<_, Error>(
-                hero::estimate_with::<1, _, R>(light, surface, samples, pdf, sampling.strata, rng)
+            Method::Random { sampling } => with_pdf!(sampling.pdf, |pdf| hero::estimate_width(
+                1,
+                light,
+                surface,
+                samples,
+                pdf,
+                sampling.strata,
+                rng
             ))?,
-            Method::Hero { k, sampling } => with_pdf!(sampling.pdf, |pdf| hero::estimate_dyn(
+            Method::Hero { k, sampling } => with_pdf!(sampling.pdf, |pdf| hero::estimate_width(
                 k,
                 light,
                 surface,
@@ -304,7 +309,7 @@ impl Prepared<'_> {
                 sampling.strata,
                 rng
             ))?,
-            Method::Buckets { rule } => Buckets::new(samples.get(), rule)?.xyz(light, surface),
+            Method::Buckets { rule } => Rule::buckets(samples.get(), rule)?.xyz(light, surface),
             Method::Fitted => self.fitted(samples.get())?.xyz_of_product(&[light, surface]),
         })
     }
@@ -329,22 +334,22 @@ impl Prepared<'_> {
                     _ => (1, self.method.sampling().unwrap_or_default()),
                 };
                 let pdf = self.pdf().ok_or(Error::DarkLight)?;
-                hero::estimate_dyn(k, light, &path, samples, pdf, sampling.strata, rng)?
+                hero::estimate_width(k, light, &path, samples, pdf, sampling.strata, rng)?
             }
-            Method::Buckets { rule } => {
-                let buckets = Buckets::new(samples.get(), rule)?;
-                let (l, s) = (buckets.values(light), buckets.values(surface));
-                let mut values: Vec<&[f64]> = vec![&l];
-                values.extend(std::iter::repeat_n(&s[..], depth.get()));
-                buckets.xyz_of_product(&values)
-            }
+            Method::Buckets { rule } => Rule::buckets(samples.get(), rule)?.xyz_of_product(&factors),
             Method::Fitted => self.fitted(samples.get())?.xyz_of_product(&factors),
         })
     }
 
     /// The fitted rule of `m` wavelengths (an error for other methods).
-    fn fitted(&self, m: usize) -> Result<&FittedRule, StudyError> {
-        self.rule(m)?.ok_or(StudyError::Spectra(Error::NodeCount { m, max: MAX_NODES }))
+    fn fitted(&self, m: usize) -> Result<&Rule, StudyError> {
+        let fitted = self.rule(m)?;
+        fitted.ok_or(StudyError::Spectra(Error::Count {
+            what: "a fitted wavelength count",
+            found: m,
+            min: 1,
+            max: MAX_M,
+        }))
     }
 
     /// The method's density for the light, if it draws wavelengths: for

@@ -38,9 +38,9 @@ use std::num::NonZeroUsize;
 
 use crate::color::Xyz;
 use crate::error::Error;
-use crate::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
-use crate::sampling::fitted::MAX_NODES;
+use crate::sampling::buckets::BucketRule;
 use crate::sampling::reference;
+use crate::sampling::rule::{MAX_M, Rule};
 use crate::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::study::convergence::CONVERGENCE_MAX_N;
 use crate::study::cost::{self, Config, Cost};
@@ -181,8 +181,8 @@ pub fn plan_with_costs(
     let mut plan = Plan { chosen: None, runners_up: Vec::new(), others: Vec::new() };
     for (config, cost) in candidates {
         let m = config.count.get();
-        if config.method.is_fixed() && m > MAX_BUCKETS.min(MAX_NODES) {
-            return Err(Error::BucketCount { m, max: MAX_BUCKETS.min(MAX_NODES) }.into());
+        if config.method.is_fixed() && m > MAX_M {
+            return Err(Error::Count { what: "a fixed rule's size", found: m, min: 1, max: MAX_M }.into());
         }
         let done = plan.runners_up.len() == 3;
         let verdict = match config.method {
@@ -283,12 +283,12 @@ impl<'a> Scene<'a> {
     /// For M = 1 … 64 buckets under `rule`, the worst ΔE00 and where.
     fn bucket_errors(&self, rule: BucketRule) -> Result<Vec<(f64, String)>, StudyError> {
         let depth = self.depth.get();
-        self.worst_by_m(MAX_BUCKETS, |m, l, s| {
-            let buckets = Buckets::new(m, rule)?;
+        self.worst_by_m(MAX_M, |m, l, s| {
+            let buckets = Rule::buckets(m, rule)?;
             let (lv, sv) = (buckets.values(&l.spectrum), buckets.values(&s.spectrum));
             let mut factors: Vec<&[f64]> = vec![&lv];
             factors.extend(std::iter::repeat_n(&sv[..], depth));
-            Ok(buckets.xyz_of_product(&factors))
+            Ok(buckets.xyz_of_factors(&factors))
         })
     }
 
@@ -297,7 +297,7 @@ impl<'a> Scene<'a> {
     fn fitted_errors(&self, lights: &[Named]) -> Result<Vec<(f64, String)>, StudyError> {
         let spectra: Vec<&TabulatedSpectrum> = lights.iter().map(|l| &l.spectrum).collect();
         let fits = fits::for_lights(&spectra)?;
-        self.worst_by_m(MAX_NODES, |m, l, s| {
+        self.worst_by_m(MAX_M, |m, l, s| {
             let path = self.depth.path(&s.spectrum);
             let mut factors: Vec<&dyn Spectrum> = vec![&l.spectrum];
             factors.extend_from_slice(path.factors());

@@ -18,8 +18,9 @@
 
 use std::num::NonZeroUsize;
 
-use crate::sampling::buckets::{BucketRule, Buckets, MAX_BUCKETS};
+use crate::sampling::buckets::BucketRule;
 use crate::sampling::reference;
+use crate::sampling::rule::{MAX_M, Rule};
 use crate::sampling::strata::Strata;
 use crate::spectrum::Spectrum;
 use crate::study::convergence::CONVERGENCE_MAX_N;
@@ -56,11 +57,11 @@ pub fn by_m(light: &Named, surfaces: &[Named], depth: Depth) -> Result<Vec<RuleR
     let white = reference::white(l);
     let exact: Vec<_> = surfaces.iter().map(|s| depth.exact(l, &s.spectrum)).collect();
     let fits = fits::for_lights(&[l])?;
-    (1..=MAX_BUCKETS)
+    (1..=MAX_M)
         .map(|m| {
             let (mut fitted, mut center, mut boxed) = (0.0f64, 0.0f64, 0.0f64);
             let rule = fits.rule(m)?;
-            let buckets = [Buckets::new(m, BucketRule::Center)?, Buckets::new(m, BucketRule::BoxAverage)?];
+            let buckets = [Rule::buckets(m, BucketRule::Center)?, Rule::buckets(m, BucketRule::BoxAverage)?];
             for (s, &exact) in surfaces.iter().zip(&exact) {
                 let path = depth.path(&s.spectrum);
                 let mut factors: Vec<&dyn Spectrum> = vec![l];
@@ -68,10 +69,7 @@ pub fn by_m(light: &Named, surfaces: &[Named], depth: Depth) -> Result<Vec<RuleR
                 let de = |xyz| perceptual::delta_e00(xyz, exact, white);
                 fitted = fitted.max(de(rule.xyz_of_product(&factors)));
                 for (b, worst) in buckets.iter().zip([&mut center, &mut boxed]) {
-                    let (lv, sv) = (b.values(l), b.values(&s.spectrum));
-                    let mut values: Vec<&[f64]> = vec![&lv];
-                    values.extend(std::iter::repeat_n(&sv[..], depth.get()));
-                    *worst = worst.max(de(b.xyz_of_product(&values)));
+                    *worst = worst.max(de(b.xyz_of_product(&factors)));
                 }
             }
             Ok(RuleRow { light: light.name.clone(), m, fitted, center, boxed })

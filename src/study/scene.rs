@@ -112,7 +112,7 @@ impl Depth {
         if (1..=MAX_DEPTH).contains(&depth) {
             Ok(Depth(depth))
         } else {
-            Err(StudyError::Depth { found: depth.to_string() })
+            Err(StudyError::Depth { found: depth.to_string(), max: MAX_DEPTH })
         }
     }
 
@@ -156,7 +156,7 @@ impl fmt::Display for Depth {
 impl FromStr for Depth {
     type Err = StudyError;
     fn from_str(s: &str) -> Result<Depth, StudyError> {
-        let bad = || StudyError::Depth { found: s.to_string() };
+        let bad = || StudyError::Depth { found: s.to_string(), max: MAX_DEPTH };
         s.trim().parse::<usize>().map_err(|_| bad()).and_then(|d| Depth::new(d).map_err(|_| bad()))
     }
 }

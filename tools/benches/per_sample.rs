@@ -16,6 +16,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use speclab::sampling::reference;
+use speclab::spectrum::{DenseObserver, DenseSpectrum};
 use speclab::{BoxAverage, Center, HeroSample, RegularSpectrum, SampledSpectrum, data};
 
 /// A fixed low-discrepancy sequence of u, so every run draws the same.
@@ -44,6 +45,14 @@ fn per_sample(c: &mut Criterion) {
             h.to_xyz(light.sample(&h) * surface.sample(&h))
         })
     });
+    let (dl, ds, dobs) =
+        (DenseSpectrum::<f32>::new(light), DenseSpectrum::<f32>::new(surface), DenseObserver::<f32>::new());
+    group.bench_function("hero K=4 f32 over dense tables, one sample", |b| {
+        b.iter(|| {
+            let h = HeroSample::<4, f32>::with_observer(black_box(next_u()) as f32, &dobs);
+            h.to_xyz(dl.sample(&h) * ds.sample(&h))
+        })
+    });
     let (lc, sc) =
         (RegularSpectrum::<16, Center>::center(light), RegularSpectrum::<16, Center>::center(surface));
     group.bench_function("regular M=16 centre, multiply + to_xyz", |b| {
@@ -56,11 +65,23 @@ fn per_sample(c: &mut Criterion) {
     group.bench_function("regular M=16 box, multiply + to_xyz", |b| {
         b.iter(|| (black_box(lb) * black_box(sb)).to_xyz())
     });
-    let rule = speclab::sampling::fitted::FittedRule::fit(&[light], 10).expect("a rule");
-    let at = rule.wavelengths::<10>().expect("M = 10");
+    let (lc32, sc32) = (
+        RegularSpectrum::<16, Center, f32>::center(light),
+        RegularSpectrum::<16, Center, f32>::center(surface),
+    );
+    group.bench_function("regular M=16 centre f32, multiply + to_xyz", |b| {
+        b.iter(|| (black_box(lc32) * black_box(sc32)).to_xyz())
+    });
+    let rule = speclab::sampling::rule::Rule::fit(&[light], 10).expect("a rule");
+    let at = rule.wavelengths::<10, f64>().expect("M = 10");
     let (lf, sf) = (light.sample(&at), surface.sample(&at));
     group.bench_function("fitted M=10, multiply + to_xyz", |b| {
         b.iter(|| at.to_xyz(black_box(lf) * black_box(sf)))
+    });
+    let at32 = rule.wavelengths::<10, f32>().expect("M = 10");
+    let (lf32, sf32) = (light.sample(&at32), surface.sample(&at32));
+    group.bench_function("fitted M=10 f32, multiply + to_xyz", |b| {
+        b.iter(|| at32.to_xyz(black_box(lf32) * black_box(sf32)))
     });
     group.bench_function("exact reference", |b| {
         b.iter(|| reference::xyz(black_box(light), black_box(surface)))
@@ -112,10 +133,10 @@ fn drawing(c: &mut Criterion) {
 fn evaluating(c: &mut Criterion) {
     use speclab::LinearSrgb;
     use speclab::color::rgb_table::RgbTable;
-    use speclab::spectrum::{DenseSpectrum, RgbAlbedo};
+    use speclab::spectrum::RgbAlbedo;
     let h = HeroSample::<4>::new(0.3);
     let patch = &data::patches::H4;
-    let dense = DenseSpectrum::new(patch);
+    let dense = DenseSpectrum::<f64>::new(patch);
     let rgb = LinearSrgb::from([0.6, 0.3, 0.1]);
     let albedo = RgbAlbedo::new(rgb).expect("an albedo");
     let table = RgbTable::srgb();
@@ -123,7 +144,9 @@ fn evaluating(c: &mut Criterion) {
     group.bench_function("TabulatedSpectrum (exact cubic)", |b| {
         b.iter(|| black_box(h).sample(black_box(patch)))
     });
-    group.bench_function("DenseSpectrum (1 nm lines)", |b| b.iter(|| black_box(h).sample(black_box(&dense))));
+    group.bench_function("DenseSpectrum (1 nm, nearest)", |b| {
+        b.iter(|| black_box(h).sample(black_box(&dense)))
+    });
     group.bench_function("RgbAlbedo (sigmoid)", |b| b.iter(|| black_box(h).sample(black_box(&albedo))));
     group.bench_function("RgbAlbedo::new (Gauss-Newton fit)", |b| b.iter(|| RgbAlbedo::new(black_box(rgb))));
     group.bench_function("RgbTable::albedo (lookup)", |b| b.iter(|| table.albedo(black_box(rgb))));
@@ -181,13 +204,13 @@ fn preparing(c: &mut Criterion) {
     let mut fit = c.benchmark_group("fitting a rule (once per scene's lights)");
     fit.sample_size(10);
     for m in [8, 16] {
-        fit.bench_function(format!("FittedRule::fit F11, M={m}"), |b| {
-            b.iter(|| speclab::sampling::fitted::FittedRule::fit(&[black_box(light)], m))
+        fit.bench_function(format!("Rule::fit F11, M={m}"), |b| {
+            b.iter(|| speclab::sampling::rule::Rule::fit(&[black_box(light)], m))
         });
     }
     let three: [&dyn speclab::Spectrum; 3] = [&data::lights::A, &data::lights::D65, light];
-    fit.bench_function("FittedRule::fit A + D65 + F11, M=16", |b| {
-        b.iter(|| speclab::sampling::fitted::FittedRule::fit(black_box(&three), 16))
+    fit.bench_function("Rule::fit A + D65 + F11, M=16", |b| {
+        b.iter(|| speclab::sampling::rule::Rule::fit(black_box(&three), 16))
     });
     fit.finish();
 }

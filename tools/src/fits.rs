@@ -5,7 +5,7 @@
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use speclab::sampling::fitted::FittedRule;
+use speclab::sampling::rule::Rule;
 use speclab::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
 /// One light: its name, spectrum and rule.
@@ -15,7 +15,7 @@ pub struct Panel<'a> {
     /// The light.
     pub light: &'a dyn Spectrum,
     /// The rule fitted to it.
-    pub rule: FittedRule,
+    pub rule: Rule,
 }
 
 const COLUMN: (u32, u32) = (520, 620);
@@ -92,7 +92,7 @@ fn column(area: &Area, p: &Panel) -> Result<(), String> {
 /// The weights as stems, X, Y and Z side by side at each wavelength.
 fn weights(area: &Area, p: &Panel) -> Result<(), String> {
     let err = |e: DrawingAreaErrorKind<std::io::Error>| e.to_string();
-    let w = p.rule.weights();
+    let (w, _) = p.rule.weights();
     let most = w.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
     let (lo, hi) = (w.iter().flatten().fold(0.0f64, |a, &v| a.min(v)) / most, 1.0);
     let mut chart = ChartBuilder::on(area)
@@ -109,10 +109,10 @@ fn weights(area: &Area, p: &Panel) -> Result<(), String> {
         .light_line_style(RGBColor(242, 242, 242))
         .draw()
         .map_err(err)?;
-    for (&l, w) in p.rule.lambda().iter().zip(w) {
+    for (i, &l) in p.rule.lambda().iter().enumerate() {
         for (c, colour) in CHANNELS.iter().enumerate() {
             let x = l + (c as f64 - 1.0) * 1.8;
-            let v = w[c] / most;
+            let v = w[c][i] / most;
             chart.draw_series(LineSeries::new([(x, 0.0), (x, v)], colour.stroke_width(3))).map_err(err)?;
         }
     }

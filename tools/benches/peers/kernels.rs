@@ -16,8 +16,8 @@
 //! speclab kernel uses the same xorshift32 as the hand-tuned one.
 
 use speclab::spectrum::observer::xyz_bar;
-use speclab::spectrum::{DenseObserver, DenseSpectrum};
-use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum, TabulatedSpectrum, Xyz};
+use speclab::spectrum::{DenseObserver, DenseSpectrum, Float};
+use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, TabulatedSpectrum, Xyz};
 
 /// Table entries: one per nm from 380 to 730 inclusive.
 pub const ENTRIES: usize = 351;
@@ -90,9 +90,10 @@ impl Tables {
     }
 }
 
-/// speclab's per-sample path, K = 4: the mean XYZ of `n` hero samples.
+/// speclab's per-sample path over exact spectra, K wavelengths in
+/// precision `T`: the mean XYZ of `n` hero samples.
 #[inline(never)]
-pub fn speclab_hero(
+pub fn speclab_hero<const K: usize, T: Float>(
     light: &TabulatedSpectrum,
     surface: &TabulatedSpectrum,
     n: usize,
@@ -100,42 +101,27 @@ pub fn speclab_hero(
 ) -> Xyz {
     let mut sum = Xyz::ZERO;
     for _ in 0..n {
-        let h = HeroSample::<4>::new(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
+        let h = HeroSample::<K, T>::new(T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0)));
         sum += h.to_xyz(light.sample(&h) * surface.sample(&h));
     }
     sum / n as f64
 }
 
 /// speclab's per-sample path over dense tables (light, surface and
-/// observer every nm, linear between), K = 4: the mean XYZ of `n` hero
-/// samples.
+/// observer at every whole nm, looked up at the nearest), K = 4 in
+/// precision `T`: the mean XYZ of `n` hero samples.
 #[inline(never)]
-pub fn speclab_dense_hero(
-    light: &DenseSpectrum,
-    surface: &DenseSpectrum,
-    observer: &DenseObserver,
+pub fn speclab_dense_hero<T: Float>(
+    light: &DenseSpectrum<T>,
+    surface: &DenseSpectrum<T>,
     n: usize,
     rng: &mut XorShift32,
 ) -> Xyz {
+    let observer = DenseObserver::<T>::new();
     let mut sum = Xyz::ZERO;
     for _ in 0..n {
-        let h = HeroSample::<4>::new(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
-        sum += h.to_xyz_with(observer, light.sample(&h) * surface.sample(&h));
-    }
-    sum / n as f64
-}
-
-/// speclab's per-sample path, K = 1: the mean XYZ of `n` random wavelengths.
-#[inline(never)]
-pub fn speclab_random(
-    light: &TabulatedSpectrum,
-    surface: &TabulatedSpectrum,
-    n: usize,
-    rng: &mut XorShift32,
-) -> Xyz {
-    let mut sum = Xyz::ZERO;
-    for _ in 0..n {
-        let h = HeroSample::<1>::new(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
+        let u = T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
+        let h = HeroSample::<4, T>::with_observer(u, &observer);
         sum += h.to_xyz(light.sample(&h) * surface.sample(&h));
     }
     sum / n as f64

@@ -17,7 +17,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use speclab::data::Light;
-use speclab::sampling::fitted::FittedRule;
+use speclab::sampling::rule::Rule;
 use speclab_tools::{chart, fits};
 
 const USAGE: &str = "\
@@ -51,7 +51,7 @@ fn run(m: usize, out: &PathBuf) -> Result<(), String> {
     let panels = Light::ALL
         .iter()
         .map(|&l| {
-            let rule = FittedRule::fit(&[l.spectrum()], m).map_err(|e| e.to_string())?;
+            let rule = Rule::fit(&[l.spectrum()], m).map_err(|e| e.to_string())?;
             Ok(fits::Panel { name: l.to_string(), light: l.spectrum(), rule })
         })
         .collect::<Result<Vec<_>, String>>()?;

@@ -1,0 +1,153 @@
+//! What a spectrum keeps of the work done on it: a [`Cache`].
+//!
+//! Used as a light, a spectrum's exact reference weights for reflectances
+//! on a grid (see `weights.rs` and `sampling::PreparedLight`) take about
+//! 20 µs to compute and make every later exact XYZ a dot product. A
+//! spectrum that holds a `Cache` and returns it from
+//! [`Spectrum::cache`](super::Spectrum::cache) keeps them, computed on
+//! first use, for the first grid it is used with: tables do, and so can a
+//! renderer's own light type. A cache is part of no spectrum's value: a
+//! clone starts empty, and equality ignores it.
+//!
+//! ```
+//! use speclab::spectrum::{Cache, FnSpectrum, Spectrum};
+//! use speclab::{data::patches, sampling::reference};
+//! struct Lamp(Cache); // a renderer's light, keeping its weights
+//! impl Spectrum for Lamp {
+//!     fn eval(&self, lambda: f64) -> f64 { if lambda < 600.0 { 1.0 } else { 2.0 } }
+//!     fn pieces(&self) -> Option<speclab::spectrum::Pieces<'_>> {
+//!         Some(speclab::spectrum::Pieces { breaks: vec![600.0].into(), degree: 0 })
+//!     }
+//!     fn cache(&self) -> Option<&Cache> { Some(&self.0) }
+//! }
+//! let lamp = Lamp(Cache::default());
+//! let fast = reference::xyz(&lamp, &patches::G4); // computes and keeps the weights
+//! let slow = reference::xyz_of_product(&[&lamp, &patches::G4]);
+//! assert!((fast.y - slow.y).abs() < 1e-12 * slow.y);
+//! ```
+
+use std::sync::OnceLock;
+
+use crate::spectrum::validate::Interpolation;
+
+/// Where a spectrum keeps what is computed from it once.
+#[derive(Default)]
+pub struct Cache {
+    weights: OnceLock<Weights>,
+}
+
+impl Clone for Cache {
+    /// An empty cache: what is kept belongs to the value that computed it.
+    fn clone(&self) -> Self {
+        Cache::default()
+    }
+}
+
+impl PartialEq for Cache {
+    /// Always equal: a cache is not part of a spectrum's value.
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl std::fmt::Debug for Cache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Cache").field("weights", &self.weights.get().map(|w| w.grid().len())).finish()
+    }
+}
+
+impl Cache {
+    /// An empty cache (also `Cache::default()`).
+    #[must_use]
+    pub const fn new() -> Cache {
+        Cache { weights: OnceLock::new() }
+    }
+
+    /// The kept weights, computing them with `compute` if none are kept.
+    pub(crate) fn weights(&self, compute: impl FnOnce() -> Weights) -> &Weights {
+        self.weights.get_or_init(compute)
+    }
+}
+
+/// Exact weights of one light for reflectances on one grid.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Weights {
+    /// The reflectances' wavelengths, nm.
+    pub(crate) grid: Vec<f64>,
+    /// The reflectances' interpolation.
+    pub(crate) cubic: bool,
+    /// The integration range: 380–730 nm ∩ the light's and the grid's support.
+    pub(crate) range: [f64; 2],
+    /// Per sample, per channel.
+    pub(crate) samples: Vec<[f64; 3]>,
+    /// Per segment, per stencil sample (4; linear uses 2), per channel.
+    pub(crate) segments: Vec<[[f64; 3]; 4]>,
+    /// Per segment: the stencil vectors giving the cubic's inner Bernstein
+    /// coefficients b₁ and b₂ (b₀ and b₃ are the segment's samples).
+    pub(crate) hull: Vec<[[f64; 4]; 2]>,
+    /// Per segment: the |coefficient sum| turning the stencil's two second
+    /// divided differences into a bound on the inner Bernstein coefficients'
+    /// distance from the linear interpolation (0 for linear grids).
+    pub(crate) margins: Vec<f64>,
+}
+
+impl Weights {
+    /// True if these are the weights for reflectances on `grid`
+    /// interpolated by `interpolation`.
+    pub(crate) fn fits(&self, grid: &[f64], interpolation: Interpolation) -> bool {
+        self.grid == grid && self.interpolation() == interpolation
+    }
+
+    /// The reflectances' wavelengths, nm.
+    #[must_use]
+    pub(crate) fn grid(&self) -> &[f64] {
+        &self.grid
+    }
+
+    /// The reflectances' interpolation.
+    #[must_use]
+    pub(crate) fn interpolation(&self) -> Interpolation {
+        if self.cubic { Interpolation::Cubic } else { Interpolation::Linear }
+    }
+
+    /// The integration range, nm.
+    pub(crate) fn range(&self) -> [f64; 2] {
+        self.range
+    }
+
+    /// One weight per sample and channel.
+    pub(crate) fn samples(&self) -> &[[f64; 3]] {
+        &self.samples
+    }
+
+    /// Segment `k`'s weights per stencil sample, and where its stencil starts.
+    pub(crate) fn segment(&self, k: usize) -> (&[[f64; 3]], usize) {
+        let (s, width) = stencil(self.cubic, k, self.grid.len());
+        (&self.segments[k][..width], s)
+    }
+
+    /// Segment `k`'s Bernstein stencil vectors (cubic grids).
+    pub(crate) fn hull(&self) -> &[[[f64; 4]; 2]] {
+        &self.hull
+    }
+
+    /// Per segment, the margin `Cₖ` of `min(yₖ, yₖ₊₁) − Cₖ·S ≥ 0`, with S
+    /// the larger |second divided difference| of the segment's stencil.
+    pub(crate) fn margins(&self) -> &[f64] {
+        &self.margins
+    }
+
+    /// For an equidistant grid of step h, the step (margins divided by
+    /// `2h²` apply to plain second differences `y₀ − 2y₁ + y₂`, which are
+    /// `2h²·[x₀, x₁, x₂]y`). `None` for other grids.
+    pub(crate) fn step(&self) -> Option<f64> {
+        let g = &self.grid;
+        let h = (g[g.len() - 1] - g[0]) / (g.len() - 1) as f64;
+        g.windows(2).all(|w| ((w[1] - w[0]) - h).abs() <= 1e-9 * h).then_some(h)
+    }
+}
+
+/// The stencil of segment `k` of `n` samples: first sample and width.
+pub(crate) fn stencil(cubic: bool, k: usize, n: usize) -> (usize, usize) {
+    if cubic { (speclab_tables::interp::stencil(k, n), 4) } else { (k, 2) }
+}
