@@ -104,16 +104,23 @@ impl BucketRule {
     }
 }
 
-/// The exact means of `s` over each of `out.len()` buckets: from the
-/// spectrum's own exact integral where it has one at hand (a table's
-/// running sums: O(1) per bucket), otherwise each bucket's integral
-/// piece by piece (exact for a piecewise polynomial, else by quadrature).
+/// The exact means of `s` over each of `out.len()` buckets: differences of
+/// the spectrum's running integral at the edges where it has one at hand
+/// (a table's: O(1) per edge), otherwise each bucket's integral piece by
+/// piece (exact for a piecewise polynomial, else by quadrature).
 #[inline]
 pub(crate) fn box_means<S: Spectrum + ?Sized>(s: &S, out: &mut [f64]) {
     let m = out.len();
     let inv_width = m as f64 / LAMBDA_WIDTH;
+    if let Some(mut below) = s.running_integral(edge(0, m)) {
+        for (i, v) in out.iter_mut().enumerate() {
+            let above = s.running_integral(edge(i + 1, m)).unwrap_or(below);
+            *v = (above - below) * inv_width;
+            below = above;
+        }
+        return;
+    }
     for (i, v) in out.iter_mut().enumerate() {
-        let (a, b) = (edge(i, m), edge(i + 1, m));
-        *v = s.integral(a, b).unwrap_or_else(|| integrate::integral(&s, a, b)) * inv_width;
+        *v = integrate::integral(&s, edge(i, m), edge(i + 1, m)) * inv_width;
     }
 }

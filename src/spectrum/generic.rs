@@ -19,7 +19,8 @@
 //! **Fast paths are capabilities, not types.** Every path the built-in
 //! tables take is open to any spectrum that says what it can do: its
 //! own `sample` (a dense table's one load per wavelength), its exact
-//! [`integral`](Spectrum::integral) in O(1) (box buckets), its polynomial
+//! [`running_integral`](Spectrum::running_integral) in O(1) (box
+//! buckets), its polynomial
 //! [`pieces`](Spectrum::pieces) (exact integration), the
 //! [`samples`](Spectrum::samples) it interpolates (the reference as a dot
 //! product, light pdfs from its polynomials), and a [`Cache`] for what is
@@ -160,10 +161,11 @@ pub trait Spectrum {
         None
     }
 
-    /// `∫ₐᵇ` of the spectrum (zero if `b ≤ a`), exact, if the spectrum has
-    /// it at hand (a table's running sums: O(1)). `None` (the default)
+    /// The exact integral of the spectrum from its start (−∞) up to
+    /// `lambda` nm, if the spectrum has it at hand (a table's running sums:
+    /// O(1)); box buckets take differences of it. `None` (the default)
     /// makes callers integrate piece by piece.
-    fn integral(&self, _a: f64, _b: f64) -> Option<f64> {
+    fn running_integral(&self, _lambda: f64) -> Option<f64> {
         None
     }
 
@@ -197,8 +199,8 @@ macro_rules! forward_spectrum {
             fn samples(&self) -> Option<Samples<'_>> {
                 (**self).samples()
             }
-            fn integral(&self, a: f64, b: f64) -> Option<f64> {
-                (**self).integral(a, b)
+            fn running_integral(&self, lambda: f64) -> Option<f64> {
+                (**self).running_integral(lambda)
             }
             fn cache(&self) -> Option<&Cache> {
                 (**self).cache()

@@ -399,8 +399,8 @@ impl Spectrum for TabulatedSpectrum {
 
     /// From the running sums kept with the table: O(1) on an equidistant
     /// table.
-    fn integral(&self, a: f64, b: f64) -> Option<f64> {
-        Some(if b > a { self.cumulative(b) - self.cumulative(a) } else { 0.0 })
+    fn running_integral(&self, lambda: f64) -> Option<f64> {
+        Some(self.cumulative(lambda))
     }
 
     fn cache(&self) -> Option<&Cache> {
