@@ -93,6 +93,15 @@ pub enum Error {
         /// The components given.
         rgb: [f64; 3],
     },
+    /// Dispersion coefficients that do not give a real, finite, positive
+    /// refractive index over 380–730 nm.
+    Dispersion,
+    /// A correlated colour temperature outside the CIE daylight formula's
+    /// range (4000–25000 K).
+    Daylight {
+        /// The temperature given, K.
+        kelvin: f64,
+    },
     /// A weight of a sum that is not finite and non-negative.
     Weight {
         /// Which term.
@@ -151,14 +160,52 @@ impl fmt::Display for Error {
                 "expected linear sRGB components in [0, 1], found ({}, {}, {})",
                 rgb[0], rgb[1], rgb[2]
             ),
+            Error::Dispersion => write!(
+                f,
+                "expected dispersion coefficients giving a real, finite, positive refractive index \
+                 over 380-730 nm, found others"
+            ),
+            Error::Daylight { kelvin } => {
+                write!(f, "expected a daylight temperature from 4000 to 25000 K, found {kelvin} K")
+            }
             Error::Weight { index, weight } => {
                 write!(f, "term {index}: expected a finite non-negative weight, found {weight}")
             }
-            Error::UnknownName { what, expected, found } => {
+            Error::UnknownName { what, expected, found } if expected.len() <= 12 => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))
             }
+            Error::UnknownName { what, expected, found } => write!(
+                f,
+                "expected {what} (nearest: {}; {} names in all), found {found:?}",
+                or_list(nearest(expected, found, 3).iter()),
+                expected.len()
+            ),
         }
     }
+}
+
+/// The `count` names closest to `found` by edit distance (ignoring case),
+/// closest first (ties in the list's order).
+fn nearest(names: &[&'static str], found: &str, count: usize) -> Vec<&'static str> {
+    let found: Vec<char> = found.to_lowercase().chars().collect();
+    let distance = |name: &str| {
+        let name: Vec<char> = name.to_lowercase().chars().collect();
+        let mut row: Vec<usize> = (0..=name.len()).collect();
+        for (i, a) in found.iter().enumerate() {
+            let mut previous = row[0];
+            row[0] = i + 1;
+            for (j, b) in name.iter().enumerate() {
+                let next = (previous + usize::from(a != b)).min(row[j] + 1).min(row[j + 1] + 1);
+                previous = row[j + 1];
+                row[j + 1] = next;
+            }
+        }
+        row[name.len()]
+    };
+    let mut ranked: Vec<(usize, usize, &'static str)> =
+        names.iter().enumerate().map(|(i, n)| (distance(n), i, *n)).collect();
+    ranked.sort_unstable();
+    ranked.into_iter().take(count).map(|(_, _, n)| n).collect()
 }
 
 /// `1, 2 or 3`.

@@ -57,7 +57,7 @@ fn point_wise_errors_within_the_stated_bounds() {
 #[test]
 fn integrals_within_the_stated_error() {
     let mut worst_by_light = Vec::new();
-    for light in Light::ALL {
+    for light in Light::APPENDIX {
         let mut largest = 0.0f64;
         for patch in Patch::ALL {
             let (l, s) = (light.spectrum(), patch.spectrum());

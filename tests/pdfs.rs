@@ -13,7 +13,7 @@ use speclab::{Error, HeroSample, Role, TabulatedSpectrum};
 fn pdfs() -> Vec<(String, Box<dyn WavelengthPdf>)> {
     let mut out: Vec<(String, Box<dyn WavelengthPdf>)> =
         vec![("uniform".into(), Box::new(Uniform)), ("visible".into(), Box::new(Visible))];
-    for light in Light::ALL {
+    for light in Light::APPENDIX {
         let l = light.spectrum();
         out.push((format!("light {light:?}"), Box::new(LightPdf::light(l).expect("bright"))));
         out.push((format!("balanced {light:?}"), Box::new(LightPdf::balanced(l).expect("bright"))));
@@ -134,7 +134,7 @@ fn spread_matches_exact_variance() {
     const TRIALS: usize = 4000;
     let mut rng = StdRng::seed_from_u64(17);
     let mut worst = 0.0f64;
-    for light in Light::ALL {
+    for light in Light::APPENDIX {
         let l = light.spectrum();
         let (visible, following) = (Visible, LightPdf::light(l).expect("bright"));
         for patch in [Patch::G4, Patch::A1] {

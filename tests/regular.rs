@@ -26,7 +26,7 @@ fn check<const M: usize>() {
     let width = 350.0 / M as f64;
     let (center, boxed) =
         (Rule::buckets(M, BucketRule::Center).unwrap(), Rule::buckets(M, BucketRule::BoxAverage).unwrap());
-    for light in Light::ALL {
+    for light in Light::APPENDIX {
         for patch in Patch::ALL {
             let (l, s) = (light.spectrum(), patch.spectrum());
             // Center: values at λᵢ = 380 + (i + ½)·W/M; box: means over buckets.

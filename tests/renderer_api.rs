@@ -32,7 +32,7 @@ fn unbiased_for(
     sample: impl Fn(&TabulatedSpectrum, &TabulatedSpectrum, &mut StdRng) -> Xyz,
 ) {
     let mut worst = 0.0f64;
-    for (c, (light, patch)) in Light::ALL.iter().flat_map(|l| Patch::ALL.map(|p| (*l, p))).enumerate() {
+    for (c, (light, patch)) in Light::APPENDIX.iter().flat_map(|l| Patch::ALL.map(|p| (*l, p))).enumerate() {
         let (l, s) = (light.spectrum(), patch.spectrum());
         let exact = exact(l, s).to_array();
         let mut rng = StdRng::seed_from_u64(0x7E57 + c as u64);

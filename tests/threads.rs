@@ -21,7 +21,7 @@ const ROUNDING: f64 = 1e-12;
 
 #[test]
 fn a_fresh_light_shared_by_threads_gives_exact_colours() {
-    for light in Light::ALL {
+    for light in Light::APPENDIX {
         // Scaled copies start with no weights; every thread races to make them.
         let fresh = light.spectrum().scaled(1.5).expect("finite");
         let exact: Vec<Xyz> =

@@ -22,7 +22,7 @@ const Z_MAX: f64 = 4.5;
 fn random_and_hero_are_unbiased() {
     let n = NonZeroUsize::new(N).expect("N > 0");
     let mut worst = 0.0f64;
-    for light in Light::ALL {
+    for light in Light::APPENDIX {
         for patch in Patch::ALL {
             let exact = reference::xyz(light.spectrum(), patch.spectrum()).to_array();
             for method in [Method::RANDOM, Method::HERO] {
@@ -66,7 +66,7 @@ fn sweep(cells: &[(Light, Patch)]) {
     for sampling in Sampling::all() {
         for method in [Method::RANDOM, Method::HERO].map(|m| m.with_sampling(sampling)) {
             for &(light, patch) in cells {
-                let c = Light::ALL.iter().position(|&l| l == light).unwrap_or(0) * 6
+                let c = Light::APPENDIX.iter().position(|&l| l == light).unwrap_or(0) * 6
                     + Patch::ALL.iter().position(|&p| p == patch).unwrap_or(0);
                 let (l, s) = (light.spectrum(), patch.spectrum());
                 let prepared = method.prepare(l).expect("bright lights");
@@ -101,6 +101,7 @@ fn every_pdf_and_strata_is_unbiased() {
 #[test]
 #[ignore = "the whole sweep; CI runs it in release"]
 fn every_pdf_and_strata_is_unbiased_on_every_cell() {
-    let cells: Vec<(Light, Patch)> = Light::ALL.iter().flat_map(|&l| Patch::ALL.map(|p| (l, p))).collect();
+    let cells: Vec<(Light, Patch)> =
+        Light::APPENDIX.iter().flat_map(|&l| Patch::ALL.map(|p| (l, p))).collect();
     sweep(&cells);
 }

@@ -31,7 +31,7 @@ fn riemann(light: &TabulatedSpectrum, a: f64, b: f64) -> Xyz {
 #[test]
 fn white_is_the_perfect_reflector_over_the_range() {
     let one = perfect_white();
-    for light in Light::ALL {
+    for light in Light::APPENDIX {
         let l = light.spectrum();
         let (white, patch) = (reference::white(l), reference::xyz(l, &one));
         let gap = (white - patch).to_array().iter().map(|d| d.abs()).fold(0.0, f64::max);

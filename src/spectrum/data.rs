@@ -1,81 +1,207 @@
-//! The assignment's built-in spectra, as static data generated at build time.
+//! The built-in spectra, static data generated at build time from `data/`
+//! (provenance, units, step and range of every set in `data/SOURCES.md`;
+//! each static's documentation repeats its file's header).
 //!
-//! `build.rs` reads `data/*.txt` (brace notation, values exactly as printed
-//! in Appendix 1) with `speclab_tables::Codegen`, the build helper that users
-//! get too, and emits the samples plus precomputed segment coefficients.
-//! Provenance, units, step and range of every file are in `data/SOURCES.md`.
+//! `build.rs` reads every file with `speclab_tables::Codegen`, the build
+//! helper users get too, validates it for its kind and emits the samples
+//! plus precomputed segment coefficients. Grouped so that a light cannot be
+//! passed where an index of refraction is meant:
 //!
-//! Grouped so that a light cannot be mistaken for a patch:
-//! - [`lights`] (5 nm, linear): `A` 380–730 nm, `D65` and `F11` 380–780 nm;
-//!   also by name, [`Light`].
+//! - [`lights`]: the assignment's `A`, `D65`, `F11` (Appendix 1, as
+//!   printed: Appendix 2 depends on them) and the CIE's: `CIE_A`,
+//!   `CIE_D65`, `D50`, `D55`, `D75`, `E`, `F1`–`F12` (the assignment's
+//!   `F11` is the CIE's FL11, value for value), `FL3_1`–`FL3_15`,
+//!   `HP1`–`HP5`, `LED_B1`–`LED_B5`, `LED_BH1`, `LED_RGB1`, `LED_V1`,
+//!   `LED_V2`; by name ([`Light`], [`lights::named`]), and CIE daylight at
+//!   any temperature ([`lights::daylight`]).
 //! - [`patches`], ColorChecker SG (10 nm, cubic, 380–730 nm): `E2`, `F4`,
 //!   `G4`, `H4`, `J4`, `A1`; also by name, [`Patch`].
+//! - [`conductors`]: η and k of `AG`, `AL`, `AU`, `CR`, `CU`, `CUZN`,
+//!   `MGO`, `NI`, `PT`, `TI`, `TIO2`, `W` ([`Conductor`]s; their
+//!   normal-incidence reflectance is a surface).
+//! - [`glasses`]: SCHOTT `N_BK7`, `N_BAF10`, `N_FK51A`, `N_LASF9`, `N_SF5`,
+//!   `N_SF10`, `N_SF11` ([`Sellmeier`] formulas; pbrt-v4's seven glasses).
+//! - [`daylight`]: the CIE daylight components `S0`, `S1`, `S2`.
 //! - [`cie1931`], the 2° matching functions (5 nm, cubic, 380–780 nm):
 //!   `X_BAR`, `Y_BAR`, `Z_BAR`.
 //!
+//! What a program does not use costs nothing at run time: the tables are
+//! `static` data.
+//!
 //! ```
-//! use speclab::data::{lights, patches, Light, Patch};
+//! use speclab::data::{conductors, lights, patches, Light, Patch};
+//! use speclab::Spectrum;
 //! assert_eq!(lights::F11.eval(545.0), 72.84);
 //! assert_eq!("f11".parse::<Light>()?.spectrum(), &lights::F11);
+//! assert_eq!("LED-B3".parse::<Light>()?.spectrum(), &lights::LED_B3);
 //! assert_eq!(Patch::A1.to_string(), "A1");
 //! assert!(patches::A1.eval(555.0) > 0.8);
+//! let d5000 = lights::named("D5000")?; // CIE daylight at 5000 K (nominal)
+//! assert!((d5000.eval(560.0) - 100.0).abs() < 1e-9);
+//! assert!(conductors::AU.reflectance().eval(700.0) > 0.95);
 //! # Ok::<(), speclab::Error>(())
 //! ```
+//!
+//! [`Conductor`]: crate::spectrum::Conductor
+//! [`Sellmeier`]: crate::spectrum::Sellmeier
 
-use crate::error::named_choices;
+use std::borrow::Cow;
+use std::fmt;
+use std::str::FromStr;
+
+use crate::error::{Error, named_choices};
 use crate::spectrum::TabulatedSpectrum;
 
 mod generated {
     include!(concat!(env!("OUT_DIR"), "/data.rs"));
 }
 
-/// The three appendix lights (relative spectral power; see `data/SOURCES.md`).
+/// Every built-in light (relative spectral power; see `data/SOURCES.md`),
+/// the list of them, and CIE daylight at any temperature.
 pub mod lights {
-    pub use super::generated::{A, D65, F11};
+    pub use super::generated::lights::*;
+
+    use crate::error::Error;
+    use crate::spectrum::{Role, TabulatedSpectrum};
+
+    /// The light named `name` (any case): a built-in one ([`NAMES`]), or
+    /// `D` and a temperature in kelvin for CIE daylight ([`daylight`]),
+    /// e.g. `D5000`. An [`Error::UnknownName`] names the nearest names.
+    pub fn named(name: &str) -> Result<std::borrow::Cow<'static, TabulatedSpectrum>, Error> {
+        if let Ok(light) = name.parse::<super::Light>() {
+            return Ok(std::borrow::Cow::Borrowed(light.spectrum()));
+        }
+        let kelvin = name.strip_prefix(['D', 'd']).and_then(|t| t.parse::<f64>().ok());
+        match kelvin {
+            Some(kelvin) if kelvin >= 1000.0 => daylight(kelvin).map(std::borrow::Cow::Owned),
+            _ => Err(super::unknown("a built-in light or D and a temperature (D5000)", &NAMES, name)),
+        }
+    }
+
+    /// CIE daylight at the nominal correlated colour temperature `kelvin`
+    /// (4000–25000 K): `S₀ + M₁·S₁ + M₂·S₂` (CIE 015:2018, 4.1.2), at the
+    /// temperature `kelvin · 1.4388/1.4380` (the nominal temperatures of
+    /// the D illuminants predate the current c₂: `daylight(6500.0)` is
+    /// D65's formula), M₁ and M₂ rounded to three decimals as the CIE
+    /// computes them. Tabulated every 5 nm from 300 to 830 nm, linear
+    /// between; 100 at 560 nm. It reproduces the CIE's D50, D55, D65 and
+    /// D75 tables to their rounding (`tests/named.rs`).
+    pub fn daylight(kelvin: f64) -> Result<TabulatedSpectrum, Error> {
+        if !(4000.0..=25000.0).contains(&kelvin) {
+            return Err(Error::Daylight { kelvin });
+        }
+        let t = kelvin * 1.4388 / 1.4380;
+        let x = if t <= 7000.0 {
+            -4.6070e9 / t.powi(3) + 2.9678e6 / t.powi(2) + 0.09911e3 / t + 0.244063
+        } else {
+            -2.0064e9 / t.powi(3) + 1.9018e6 / t.powi(2) + 0.24748e3 / t + 0.237040
+        };
+        let y = -3.000 * x * x + 2.870 * x - 0.275;
+        let m = 0.0241 + 0.2562 * x - 0.7341 * y;
+        let round = |v: f64| (v * 1000.0).round() / 1000.0;
+        let (m1, m2) =
+            (round((-1.3515 - 1.7703 * x + 5.9114 * y) / m), round((0.0300 - 31.4424 * x + 30.0717 * y) / m));
+        let [s0, s1, s2] = [&super::daylight::S0, &super::daylight::S1, &super::daylight::S2];
+        let values =
+            s0.values().iter().zip(s1.values()).zip(s2.values()).map(|((a, b), c)| a + m1 * b + m2 * c);
+        TabulatedSpectrum::new(s0.lambda().to_vec(), values.collect(), Role::Light)
+    }
 }
 
 /// The six ColorChecker SG patches of the appendix (reflectance, 0–1).
 pub mod patches {
-    pub use super::generated::{A1, E2, F4, G4, H4, J4};
+    pub use super::generated::patches::*;
+}
+
+/// Conductors' complex refractive indices `η + i·k` (refractiveindex.info
+/// data; see `data/SOURCES.md`), and the list of them.
+pub mod conductors {
+    pub use super::generated::conductors::*;
+}
+
+/// Dielectrics' refractive indices: pbrt-v4's seven glasses, as the
+/// SCHOTT catalogue's Sellmeier formulas (pbrt-v4 calls them glass-BK7,
+/// -BAF10, -FK51A, -LASF9, -F5, -F10, -F11; the last three are N-SF5,
+/// N-SF10 and N-SF11).
+pub mod glasses {
+    pub use super::generated::glasses::*;
+}
+
+/// The CIE daylight components S₀, S₁, S₂ (5 nm, 300–830 nm, linear).
+pub mod daylight {
+    pub use super::generated::daylight::*;
 }
 
 /// The CIE 1931 2° standard observer's matching functions x̄, ȳ, z̄.
 pub mod cie1931 {
-    pub use super::generated::{CIE_X as X_BAR, CIE_Y as Y_BAR, CIE_Z as Z_BAR};
+    pub use super::generated::cie1931::{CIE_X as X_BAR, CIE_Y as Y_BAR, CIE_Z as Z_BAR};
 }
 
-pub(crate) use generated::{
+pub(crate) use generated::XYZ_TO_SRGB;
+pub(crate) use generated::cie1931::{
     CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,
-    CIE_Z_COEFFS, CIE_Z_LAMBDA, XYZ_TO_SRGB,
+    CIE_Z_COEFFS, CIE_Z_LAMBDA,
 };
 
-/// The three appendix lights, by name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Light {
-    /// CIE illuminant A (incandescent).
-    A,
-    /// CIE illuminant D65 (daylight).
-    D65,
-    /// F11 (narrow-band fluorescent; spiky).
-    F11,
-}
+/// A built-in light, by its place in [`lights::ALL`]: a `Copy` handle with
+/// a name and a static spectrum.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Light(usize);
 
 impl Light {
-    /// All lights, in the order of Appendix 2's columns.
-    pub const ALL: [Light; 3] = [Light::A, Light::D65, Light::F11];
+    /// CIE illuminant A as the assignment prints it.
+    pub const A: Light = Light(0);
+    /// CIE illuminant D65 as the assignment prints it.
+    pub const D65: Light = Light(1);
+    /// F11 as the assignment prints it (the CIE's FL11).
+    pub const F11: Light = Light(2);
+    /// The assignment's three lights, in the order of Appendix 2's columns.
+    pub const APPENDIX: [Light; 3] = [Light::A, Light::D65, Light::F11];
+
+    /// Every built-in light, in [`lights::ALL`]'s order.
+    pub fn all() -> impl Iterator<Item = Light> {
+        (0..lights::ALL.len()).map(Light)
+    }
+
+    /// The light's name, as on command lines (`A`, `CIE-D65`, `LED-B3`).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        lights::ALL[self.0].0
+    }
 
     /// The light's spectrum.
     #[must_use]
     pub fn spectrum(self) -> &'static TabulatedSpectrum {
-        match self {
-            Light::A => &lights::A,
-            Light::D65 => &lights::D65,
-            Light::F11 => &lights::F11,
-        }
+        lights::ALL[self.0].1
     }
 }
 
-named_choices!(Light, "a built-in light": A => "A", D65 => "D65", F11 => "F11");
+impl fmt::Display for Light {
+    /// The name used on command lines, in tables and in CSV.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl fmt::Debug for Light {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Light({})", self.name())
+    }
+}
+
+impl FromStr for Light {
+    type Err = Error;
+    /// The built-in light of this name, in any case.
+    fn from_str(s: &str) -> Result<Self, Error> {
+        let found = lights::NAMES.iter().position(|n| n.eq_ignore_ascii_case(s));
+        found.map(Light).ok_or_else(|| unknown("a built-in light", &lights::NAMES, s))
+    }
+}
+
+/// An [`Error::UnknownName`] for `found` among `names`.
+fn unknown(what: &'static str, names: &'static [&'static str], found: &str) -> Error {
+    Error::UnknownName { what, expected: names, found: found.to_string() }
+}
 
 /// The six ColorChecker SG patches of the appendix, by name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -113,3 +239,31 @@ impl Patch {
 }
 
 named_choices!(Patch, "a built-in patch": E2 => "E2", F4 => "F4", G4 => "G4", H4 => "H4", J4 => "J4", A1 => "A1");
+
+/// The names of the built-in surfaces: the patches, then the conductors.
+pub const SURFACE_NAMES: [&str; 6 + conductors::NAMES.len()] = surface_names();
+
+const fn surface_names() -> [&'static str; 6 + conductors::NAMES.len()] {
+    let mut out = [""; 6 + conductors::NAMES.len()];
+    let patches = ["E2", "F4", "G4", "H4", "J4", "A1"];
+    let mut i = 0;
+    while i < out.len() {
+        out[i] = if i < 6 { patches[i] } else { conductors::NAMES[i - 6] };
+        i += 1;
+    }
+    out
+}
+
+/// The surface named `name` (any case): a patch, or a conductor's
+/// normal-incidence reflectance tabulated every nanometre
+/// ([`NormalReflectance::tabulated`](crate::spectrum::NormalReflectance::tabulated)).
+pub fn surface_named(name: &str) -> Result<Cow<'static, TabulatedSpectrum>, Error> {
+    if let Ok(patch) = name.parse::<Patch>() {
+        return Ok(Cow::Borrowed(patch.spectrum()));
+    }
+    let conductor = conductors::ALL.iter().find(|(n, _)| n.eq_ignore_ascii_case(name));
+    match conductor {
+        Some((_, c)) => Ok(Cow::Owned(c.reflectance().tabulated())),
+        None => Err(unknown("a built-in surface", &SURFACE_NAMES, name)),
+    }
+}

@@ -21,8 +21,12 @@
 //! - [`validate`]: what makes samples a spectrum (shared with build
 //!   scripts through `speclab_tables`).
 //! - [`observer`]: the CIE 1931 x̄, ȳ, z̄ at any wavelength.
-//! - [`data`]: the assignment's built-in spectra, static data made at
-//!   compile time: [`data::lights`], [`data::patches`], [`data::cie1931`].
+//! - [`Conductor`] (η and k; its [`NormalReflectance`]), [`Sellmeier`],
+//!   [`Cauchy`]: optical constants as spectra.
+//! - [`data`]: the built-in spectra, static data made at compile time:
+//!   [`data::lights`] (the assignment's and the CIE's), [`data::patches`],
+//!   [`data::conductors`], [`data::glasses`], [`data::daylight`],
+//!   [`data::cie1931`].
 //! - The range every integral and sampler covers: [`LAMBDA_MIN`] to
 //!   [`LAMBDA_MAX`] (380–730 nm, width [`LAMBDA_WIDTH`] = 350 nm).
 //!
@@ -46,6 +50,7 @@ pub(crate) mod integrate;
 pub(crate) mod lookup;
 mod mixture;
 pub mod observer;
+mod optics;
 pub(crate) mod piecewise;
 pub(crate) mod pointwise;
 mod product;
@@ -66,6 +71,7 @@ pub use float::{Float, Lanes};
 pub use generic::{Pieces, Samples, Spectrum};
 pub use mixture::Mixture;
 pub use observer::{Cie1931, Observer};
+pub use optics::{Cauchy, Conductor, NormalReflectance, Sellmeier};
 pub use product::Product;
 pub use sampled::{SampledSpectrum, Wavelengths};
 pub use sigmoid::{RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial, sigmoid};

@@ -6,9 +6,12 @@
 //! use speclab::Role;
 //! let d65 = Choice::Name("d65".into()).resolve(Role::Light)?;
 //! assert_eq!(d65.name, "D65");
+//! assert_eq!(Choice::Name("led-b3".into()).resolve(Role::Light)?.name, "LED-B3");
+//! assert_eq!(Choice::Name("D5000".into()).resolve(Role::Light)?.name, "D5000");
+//! assert_eq!(Choice::Name("au".into()).resolve(Role::Reflectance)?.name, "Au");
 //! assert_eq!(builtin_surfaces().len(), 6);
-//! let err = Choice::Name("F12".into()).resolve(Role::Light).unwrap_err();
-//! assert_eq!(err.to_string(), "expected a built-in light (A, D65 or F11), found \"F12\"");
+//! let err = Choice::Name("F13".into()).resolve(Role::Light).unwrap_err();
+//! assert!(err.to_string().starts_with("expected a built-in light or D and a temperature (D5000) (nearest: F11, F1 or F3"));
 //! # Ok::<(), speclab::study::StudyError>(())
 //! ```
 
@@ -19,7 +22,7 @@ use std::str::FromStr;
 use crate::color::Xyz;
 use crate::io::Load;
 use crate::sampling::reference;
-use crate::spectrum::data::{Light, Patch};
+use crate::spectrum::data::{Light, Patch, SURFACE_NAMES, lights, surface_named};
 use crate::spectrum::{Product, Role, Spectrum, TabulatedSpectrum};
 use crate::study::error::StudyError;
 
@@ -43,7 +46,9 @@ impl Named {
 /// A spectrum chosen on a command line: a built-in name or a file.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Choice {
-    /// A built-in spectrum by name, any case (A, D65, F11; E2, F4, G4, H4, J4, A1).
+    /// A built-in spectrum by name, any case: a light of
+    /// `data::lights::NAMES` or `D` and a temperature, a surface of
+    /// `data::SURFACE_NAMES`.
     Name(String),
     /// A file in any format [`Load`] reads.
     File(PathBuf),
@@ -52,14 +57,12 @@ pub enum Choice {
 impl Choice {
     /// The spectrum, named as tables show it (a file by its stem). Names are
     /// looked up among the built-in lights for [`Role::Light`] and among the
-    /// patches otherwise.
+    /// surfaces otherwise.
     pub fn resolve(&self, role: Role) -> Result<Named, StudyError> {
         match self {
             Choice::Name(name) => Ok(match role {
-                Role::Light => {
-                    name.parse::<Light>().map(|l| Named::new(l.to_string(), l.spectrum().clone()))?
-                }
-                _ => name.parse::<Patch>().map(|p| Named::new(p.to_string(), p.spectrum().clone()))?,
+                Role::Light => Named::new(canonical(name, &lights::NAMES), lights::named(name)?.into_owned()),
+                _ => Named::new(canonical(name, &SURFACE_NAMES), surface_named(name)?.into_owned()),
             }),
             Choice::File(path) => {
                 let spectrum = Load::new(role).file(path)?;
@@ -71,10 +74,16 @@ impl Choice {
     }
 }
 
+/// `name` as the list writes it (`led-b3` is `LED-B3`), or as given (a
+/// daylight temperature, upper-cased: `D5000`).
+fn canonical(name: &str, names: &[&str]) -> String {
+    names.iter().find(|n| n.eq_ignore_ascii_case(name)).map_or_else(|| name.to_uppercase(), |n| n.to_string())
+}
+
 /// The three appendix lights, named.
 #[must_use]
 pub fn builtin_lights() -> Vec<Named> {
-    Light::ALL.iter().map(|l| Named::new(l.to_string(), l.spectrum().clone())).collect()
+    Light::APPENDIX.iter().map(|l| Named::new(l.to_string(), l.spectrum().clone())).collect()
 }
 
 /// The six appendix patches, named.

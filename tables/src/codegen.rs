@@ -7,8 +7,9 @@
 //! A file is read (at most 64 MiB), its format detected (brace, columns or
 //! JSON), its samples validated for the role and checked to cover
 //! 380–730 nm, and the interpolant's coefficients and breaks computed.
-//! [`Codegen::source`] is Rust code declaring one `pub static` per spectrum;
-//! include it in your crate. A bad file fails your build with
+//! [`Codegen::source`] is Rust code declaring one `pub static` per spectrum,
+//! documented by the `#` comment lines that open its file (where it comes
+//! from); include it in your crate. A bad file fails your build with
 //! `file:line:column: expected …, found …`.
 //!
 //! In your `Cargo.toml`, this crate is a build-dependency and speclab a
@@ -91,7 +92,7 @@ impl Codegen {
         }
         let interpolation = role.interpolation();
         let samples = read::samples(text, origin, role, interpolation, None)?;
-        self.spectrum(name, origin, role, interpolation, &samples);
+        self.spectrum(name, origin, &header(text), role, interpolation, &samples);
         Ok(self)
     }
 
@@ -101,7 +102,15 @@ impl Codegen {
         &self.source
     }
 
-    fn spectrum(&mut self, name: &str, origin: &str, role: Role, interpolation: Interpolation, s: &Samples) {
+    fn spectrum(
+        &mut self,
+        name: &str,
+        origin: &str,
+        doc: &[String],
+        role: Role,
+        interpolation: Interpolation,
+        s: &Samples,
+    ) {
         let coeffs = interp::coeffs(interpolation, &s.lambda, &s.values);
         let brk = interp::breaks(&s.lambda, &coeffs, role.bounds());
         let prefix = interp::prefix(&s.lambda, &coeffs, &brk, role.bounds());
@@ -109,12 +118,22 @@ impl Codegen {
         let (n, b, p) = (s.lambda.len(), brk.len(), &self.crate_path);
         let out = &mut self.source;
         // Writing to a String cannot fail.
-        let _ = writeln!(out, "pub const {name}_LAMBDA: [f64; {n}] = {:?};", s.lambda);
-        let _ = writeln!(out, "pub const {name}_VALUES: [f64; {n}] = {:?};", s.values);
-        let _ = writeln!(out, "pub const {name}_COEFFS: [[f64; 4]; {}] = {coeffs:?};", n - 1);
-        let _ = writeln!(out, "pub const {name}_BREAKS: [f64; {b}] = {brk:?};");
-        let _ = writeln!(out, "pub const {name}_PREFIX: [f64; {n}] = {prefix:?};");
-        let _ = writeln!(out, "pub const {name}_CLEAN: [bool; {}] = {clean:?};", n - 1);
+        // The tables behind the static, public (a crate's own code may
+        // read them in `const` context) but out of the documentation; data
+        // such as 3.14 is not an approximation of π.
+        let h = "#[doc(hidden)]\n#[allow(clippy::approx_constant)]\npub const";
+        let _ = writeln!(out, "{h} {name}_LAMBDA: [f64; {n}] = {:?};", s.lambda);
+        let _ = writeln!(out, "{h} {name}_VALUES: [f64; {n}] = {:?};", s.values);
+        let _ = writeln!(out, "{h} {name}_COEFFS: [[f64; 4]; {}] = {coeffs:?};", n - 1);
+        let _ = writeln!(out, "{h} {name}_BREAKS: [f64; {b}] = {brk:?};");
+        let _ = writeln!(out, "{h} {name}_PREFIX: [f64; {n}] = {prefix:?};");
+        let _ = writeln!(out, "{h} {name}_CLEAN: [bool; {}] = {clean:?};", n - 1);
+        for line in doc {
+            let _ = writeln!(out, "/// {line}");
+        }
+        if !doc.is_empty() {
+            let _ = writeln!(out, "///");
+        }
         let _ = writeln!(
             out,
             "/// {role:?} spectrum from {origin:?}.\n\
@@ -125,6 +144,16 @@ impl Codegen {
              .expect(\"speclab codegen: inconsistent tables for {name}\");"
         );
     }
+}
+
+/// The `#` comment lines that open `text` (its provenance, in speclab's
+/// data files), without the `#`, for the static's documentation.
+fn header(text: &str) -> Vec<String> {
+    text.lines()
+        .map(str::trim)
+        .take_while(|l| l.starts_with('#'))
+        .map(|l| l.trim_start_matches('#').trim().replace('`', "'"))
+        .collect()
 }
 
 /// True for `[A-Za-z_][A-Za-z0-9_]*`, other than `_`.

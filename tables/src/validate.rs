@@ -6,7 +6,9 @@
 //! colour shifted out of the visible range) and strictly increasing, there
 //! are enough samples for the interpolation, and every value fits its
 //! [`Role`]: light power is non-negative, a reflectance lies in `[0, 1]`, a
-//! matching function is non-negative. No value may exceed [`MAX_VALUE`] in
+//! matching function is non-negative, a refractive index is positive, an
+//! extinction coefficient non-negative, a basis function any finite
+//! number. No value may exceed [`MAX_VALUE`] in
 //! magnitude, so that every product, square and sum the library forms from
 //! it stays finite.
 //!
@@ -58,6 +60,14 @@ pub enum Role {
     Reflectance,
     /// A colour matching function. Cubic, clamped to `≥ 0`.
     Observer,
+    /// The real part η of a refractive index. Linear, `> 0`.
+    Index,
+    /// The extinction coefficient k (the imaginary part of a conductor's
+    /// refractive index). Linear, `≥ 0`.
+    Extinction,
+    /// A basis function that a spectrum is a combination of (the CIE
+    /// daylight components S₀, S₁, S₂). Linear, any sign.
+    Basis,
 }
 
 impl Role {
@@ -65,7 +75,7 @@ impl Role {
     #[must_use]
     pub const fn interpolation(self) -> Interpolation {
         match self {
-            Role::Light => Interpolation::Linear,
+            Role::Light | Role::Index | Role::Extinction | Role::Basis => Interpolation::Linear,
             Role::Reflectance | Role::Observer => Interpolation::Cubic,
         }
     }
@@ -75,8 +85,9 @@ impl Role {
     #[must_use]
     pub const fn bounds(self) -> [f64; 2] {
         match self {
-            Role::Light | Role::Observer => [0.0, f64::INFINITY],
+            Role::Light | Role::Observer | Role::Index | Role::Extinction => [0.0, f64::INFINITY],
             Role::Reflectance => [0.0, 1.0],
+            Role::Basis => [f64::NEG_INFINITY, f64::INFINITY],
         }
     }
 }
@@ -105,6 +116,11 @@ pub enum Invalid {
     },
     /// A light with negative power.
     NegativePower {
+        /// The value.
+        value: f64,
+    },
+    /// A refractive index that is not positive.
+    NotPositive {
         /// The value.
         value: f64,
     },
@@ -167,6 +183,9 @@ impl fmt::Display for Invalid {
             }
             Invalid::NegativePower { value } => {
                 write!(f, "expected a non-negative light power, found {value}")
+            }
+            Invalid::NotPositive { value } => {
+                write!(f, "expected a positive refractive index, found {value}")
             }
             Invalid::OutOfRange { value, min, max } if max.is_finite() => {
                 write!(f, "expected a value in [{min}, {max}], found {value}")
@@ -281,6 +300,8 @@ fn check_value(y: f64, role: Role) -> Result<(), Invalid> {
         Err(Invalid::TooLarge { value: y, max: MAX_VALUE })
     } else if role == Role::Light && y < 0.0 {
         Err(Invalid::NegativePower { value: y })
+    } else if role == Role::Index && y <= 0.0 {
+        Err(Invalid::NotPositive { value: y })
     } else if !(min..=max).contains(&y) {
         Err(Invalid::OutOfRange { value: y, min, max })
     } else {

@@ -48,7 +48,7 @@ fn write(path: &PathBuf, bytes: &[u8]) -> Result<(), String> {
 }
 
 fn run(m: usize, out: &PathBuf) -> Result<(), String> {
-    let panels = Light::ALL
+    let panels = Light::APPENDIX
         .iter()
         .map(|&l| {
             let rule = Rule::fit(&[l.spectrum()], m).map_err(|e| e.to_string())?;
