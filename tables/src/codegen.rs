@@ -128,11 +128,14 @@ impl Codegen {
         let _ = writeln!(out, "{h} {name}_BREAKS: [f64; {b}] = {brk:?};");
         let _ = writeln!(out, "{h} {name}_PREFIX: [f64; {n}] = {prefix:?};");
         let _ = writeln!(out, "{h} {name}_CLEAN: [bool; {}] = {clean:?};", n - 1);
-        for line in doc {
-            let _ = writeln!(out, "/// {line}");
-        }
-        if !doc.is_empty() {
-            let _ = writeln!(out, "///");
+        // The file's header: its first line as the summary, all of it as
+        // written (a text block: no markdown).
+        if let Some(first) = doc.first() {
+            let _ = writeln!(out, "/// {first}\n///\n/// ```text");
+            for line in doc {
+                let _ = writeln!(out, "/// {line}");
+            }
+            let _ = writeln!(out, "/// ```");
         }
         let _ = writeln!(
             out,
