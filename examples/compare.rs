@@ -22,8 +22,8 @@ use speclab::study::scene::{Choice, Named};
 
 const USAGE: &str = "\
 usage: compare [options]
-  --light NAME | --light-file PATH      A, D65, F11, or a file (default D65)
-  --surface NAME | --surface-file PATH  E2, F4, G4, H4, J4, A1, or a file (default A1)
+  --light NAME | --light-file PATH      a built-in light (below) or a file (default D65)
+  --surface NAME | --surface-file PATH  a built-in surface (below) or a file (default A1)
   --n N          random and hero samples (default 100)
   --m M          regular buckets and fitted wavelengths, 1 to 64 (default 16)
   --depth D      surfaces per path, 1 to 4: light × surface^D (default 1)
@@ -72,7 +72,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("strata") => s.sampling.strata = parser.value()?.parse()?,
             Long("gamut") => a.gamut = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}");
+                println!("{USAGE}\n{}", common::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),

@@ -24,8 +24,8 @@ use speclab::study::{convergence, report};
 
 const USAGE: &str = "\
 usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--depth D] [--all] [--csv] [--summary]
-  --light NAME    A, D65 or F11 (default F11)
-  --surface NAME  E2, F4, G4, H4, J4 or A1 (default A1)
+  --light NAME    a built-in light (below; default F11)
+  --surface NAME  a built-in surface (below; default A1)
   --light-file PATH, --surface-file PATH   a spectrum from a file instead
   --trials T      independent trials per row for random and hero (default 1000)
   --seed S        base seed (default 1)
@@ -95,7 +95,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
                 });
             }
             Short('h') | Long("help") => {
-                println!("{USAGE}");
+                println!("{USAGE}\n{}", common::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),

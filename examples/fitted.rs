@@ -8,6 +8,7 @@
 //! cargo run --release --example fitted
 //! cargo run --release --example fitted -- --light F11 --section by-m
 //! cargo run --release --example fitted -- --section depth --budget 0.5 --trials 400
+//! cargo run --release --example fitted -- --section lights
 //! ```
 
 mod common;
@@ -22,11 +23,14 @@ use speclab::study::scene::{self, Choice, Depth, Named};
 use speclab::study::{StudyError, report, rules, shapes};
 
 const USAGE: &str = "\
-usage: fitted [--light NAME|all] [--section by-m|shapes|depth|all] [--budget B] [--trials T] [--seed S]
-  --light NAME   A, D65, F11, or all (default all); repeat for several
+usage: fitted [--light NAME|all] [--section by-m|shapes|depth|lights|all] [--budget B] [--trials T] [--seed S]
+  --light NAME   a built-in light (below), or all (default: A, D65 and F11; for the lights
+                 section, every built-in light); repeat for several
   --section S    by-m: the six patches, M = 4 to 32; shapes: the ColorChecker 24 and the
                  edge shapes; depth: smallest counts within the budget at depth 1 to 4;
-                 all (default)
+                 lights: smallest counts within the budget for the six patches under each
+                 light, then for gold and copper under A, D65 and F11 (not in all: minutes);
+                 all (default: by-m, shapes and depth)
   --budget B     the depth table's ΔE00 budget (default 1)
   --trials T     trials per hero count and patch in the depth table (default 200)
   --seed S       base seed of those trials (default 1)";
@@ -57,9 +61,9 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("light") => a.lights.push(parser.value()?.string()?),
             Long("section") => {
                 a.section = parser.value()?.string()?;
-                if !["by-m", "shapes", "depth", "all"].contains(&a.section.as_str()) {
+                if !["by-m", "shapes", "depth", "lights", "all"].contains(&a.section.as_str()) {
                     return Err(format!(
-                        "expected a section (by-m, shapes, depth or all), found {:?}",
+                        "expected a section (by-m, shapes, depth, lights or all), found {:?}",
                         a.section
                     )
                     .into());
@@ -74,7 +78,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("trials") => a.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
             Long("seed") => a.seed = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}");
+                println!("{USAGE}\n{}", common::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),
@@ -83,15 +87,24 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     Ok(a)
 }
 
-fn lights(names: &[String]) -> Result<Vec<Named>, StudyError> {
-    if names.is_empty() || names.iter().any(|n| n.eq_ignore_ascii_case("all")) {
+/// The lights named, or the appendix's three for none; every built-in
+/// light for `all` (or, in the lights section, for none).
+fn lights(names: &[String], every: bool) -> Result<Vec<Named>, StudyError> {
+    let all = names.iter().any(|n| n.eq_ignore_ascii_case("all"));
+    if all || (every && names.is_empty()) {
+        return Ok(scene::every_light());
+    }
+    if names.is_empty() {
         return Ok(scene::builtin_lights());
     }
     names.iter().map(|n| Choice::Name(n.clone()).resolve(Role::Light)).collect()
 }
 
 fn run(args: &Args, out: &mut impl Write) -> Result<(), Box<dyn std::error::Error>> {
-    let lights = lights(&args.lights)?;
+    if args.section == "lights" {
+        return by_light(args, out);
+    }
+    let lights = lights(&args.lights, false)?;
     let patches = scene::builtin_surfaces();
     let show = |section: &str| args.section == "all" || args.section == section;
     if show("by-m") {
@@ -119,6 +132,28 @@ fn run(args: &Args, out: &mut impl Write) -> Result<(), Box<dyn std::error::Erro
         let rows = rules::depth_table(&lights, &patches, args.budget, args.trials, args.seed)?;
         report::depth_table(out, &rows, args.budget)?;
     }
+    Ok(())
+}
+
+/// Per light, what the six patches need at depth 1; then gold and copper
+/// under the appendix's lights.
+fn by_light(args: &Args, out: &mut impl Write) -> Result<(), Box<dyn std::error::Error>> {
+    let (budget, trials, seed) = (args.budget, args.trials, args.seed);
+    writeln!(out, "## Every built-in light: what keeps the six patches within ΔE00 {budget}\n")?;
+    let patches = scene::builtin_surfaces();
+    let mut rows = Vec::new();
+    for light in lights(&args.lights, true)? {
+        rows.push(rules::needs(&light, &patches, Depth::ONE, budget, trials, seed)?);
+    }
+    report::needs_table(out, &rows, budget, "light", |r| r.light.clone())?;
+    writeln!(out, "\n## Metals: what keeps gold and copper (normal incidence) within ΔE00 {budget}\n")?;
+    let metals = ["Au", "Cu"].map(|m| Choice::Name(m.into()).resolve(Role::Reflectance));
+    let metals = metals.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let mut rows = Vec::new();
+    for light in scene::builtin_lights() {
+        rows.push(rules::needs(&light, &metals, Depth::ONE, budget, trials, seed)?);
+    }
+    report::needs_table(out, &rows, budget, "surfaces, light", |r| format!("Au and Cu, {}", r.light))?;
     Ok(())
 }
 

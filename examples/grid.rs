@@ -25,7 +25,8 @@ use speclab::study::scene::{Choice, Named};
 use speclab::study::texture::{self, TextureOptions};
 
 const USAGE: &str = "\
-usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture] [--light-file PATH] [--surface-file PATH]
+usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture]
+            [--light NAME | --light-file PATH]... [--surface NAME | --surface-file PATH]...
             [--normalize none|power|luminance] [--white-balance]
             [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
             [--gamut clip|chroma]
@@ -39,8 +40,10 @@ usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture] [--light-
   --texture            instead, what an RGB texture of each surface costs in colour under each
                        light (its colour under D65, upsampled), beside hero (n, jittered) and
                        buckets (M): a Markdown table
-  --light-file PATH    use this light instead of A, D65, F11 (brace, CSV/TSV or JSON)
-  --surface-file PATH  use this reflectance instead of the six patches
+  --light NAME         a built-in light (below) instead of A, D65, F11; repeat for several
+  --light-file PATH    a light from a file (brace, CSV/TSV or JSON), likewise
+  --surface NAME       a built-in surface (below) instead of the six patches; repeatable
+  --surface-file PATH  a reflectance from a file, likewise
   --normalize MODE     scale each light first: none (default, as Appendix 2),
                        power (mean power 1 over 380-730 nm), luminance (white Y = 100)
   --white-balance      Bradford-adapt each light's white to D65's before sRGB
@@ -71,6 +74,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         viewing: Viewing::default(),
         gamut: GamutMap::default(),
     };
+    let (mut own_lights, mut own_surfaces) = (false, false);
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
@@ -80,21 +84,36 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("depth") => args.grid.depth = parser.value()?.parse()?,
             Long("csv") => args.csv = true,
             Long("texture") => args.texture = true,
-            Long("light-file") => args.lights = vec![Choice::File(parser.value()?.into())],
-            Long("surface-file") => args.surfaces = vec![Choice::File(parser.value()?.into())],
+            Long("light") => chosen(&mut args.lights, &mut own_lights, Choice::Name(parser.value()?.string()?)),
+            Long("light-file") => chosen(&mut args.lights, &mut own_lights, Choice::File(parser.value()?.into())),
+            Long("surface") => {
+                chosen(&mut args.surfaces, &mut own_surfaces, Choice::Name(parser.value()?.string()?))
+            }
+            Long("surface-file") => {
+                chosen(&mut args.surfaces, &mut own_surfaces, Choice::File(parser.value()?.into()))
+            }
             Long("normalize") => args.viewing.normalize = parser.value()?.parse()?,
             Long("white-balance") => args.viewing.white_balance = true,
             Long("pdf") => args.grid.sampling.pdf = parser.value()?.parse()?,
             Long("strata") => args.grid.sampling.strata = parser.value()?.parse()?,
             Long("gamut") => args.gamut = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}");
+                println!("{USAGE}\n{}", common::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),
         }
     }
     Ok(args)
+}
+
+/// Adds `choice` to `list`, replacing the defaults on the first one.
+fn chosen(list: &mut Vec<Choice>, own: &mut bool, choice: Choice) {
+    if !*own {
+        list.clear();
+        *own = true;
+    }
+    list.push(choice);
 }
 
 /// The chosen lights (normalised) and surfaces.

@@ -23,9 +23,9 @@ use speclab::study::scene::{self, Choice, Named};
 const USAGE: &str = "\
 usage: plan --light NAME|all ... --surface NAME|all ... [--budget B] [--unbiased] [--depth D]
             [--trials T] [--seed S]
-  --light NAME         A, D65, F11, or all; repeat for more lights
+  --light NAME         a built-in light (below), or all (A, D65, F11); repeat for more lights
   --light-file PATH    a light from a file (brace, CSV/TSV or JSON); repeatable
-  --surface NAME       E2, F4, G4, H4, J4, A1, or all; repeat for more surfaces
+  --surface NAME       a built-in surface (below), or all (the six patches); repeat for more
   --surface-file PATH  a reflectance from a file; repeatable
   --budget B           the largest acceptable RMS ΔE00 in any light × surface (default 1)
   --unbiased           exclude biased methods (regular buckets, fitted rules)
@@ -68,7 +68,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("seed") => args.request.seed = parser.value()?.parse()?,
             Long("depth") => args.request.depth = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}");
+                println!("{USAGE}\n{}", common::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),

@@ -1,15 +1,20 @@
 //! Turns `data/*` into `static` spectra with `speclab_tables::Codegen`: the
 //! same parser, validation and errors as speclab's run-time loading. A bad
 //! file fails this build with `file:line:column: expected …, found …`.
-//! Only `speclab-tables` (std only) is compiled for this script.
+//! Only `speclab-tables` (std only) is compiled for this script. Any of
+//! speclab's own data sets goes through it the same way: here CIE LED-B3
+//! and the extinction coefficient of gold, from speclab's `data/`.
 
 use speclab_tables::{Codegen, Role};
 
 fn main() {
     let mut code = Codegen::new();
-    for (path, name, role) in
-        [("data/led.csv", "LED", Role::Light), ("data/leaf.json", "LEAF", Role::Reflectance)]
-    {
+    for (path, name, role) in [
+        ("data/led.csv", "LED", Role::Light),
+        ("data/leaf.json", "LEAF", Role::Reflectance),
+        ("../../data/lights/LED-B3.csv", "LED_B3", Role::Light),
+        ("../../data/conductors/Au.k.csv", "GOLD_K", Role::Extinction),
+    ] {
         println!("cargo:rerun-if-changed={path}");
         if let Err(e) = code.file(path, name, role) {
             eprintln!("error: {e}");

@@ -11,6 +11,29 @@ use std::process::ExitCode;
 use speclab::sampling::hero::MAX_WIDTH;
 use speclab::sampling::rule::MAX_M;
 
+/// The built-in names, for help texts: every light and surface, read from
+/// the library's lists.
+pub fn names_help() -> String {
+    let wrap = |names: &[&str]| {
+        let mut lines: Vec<Vec<&str>> = vec![Vec::new()];
+        for &name in names {
+            let width: usize = lines.last().map_or(0, |l| l.iter().map(|n| n.len() + 2).sum());
+            if width + name.len() > 84 {
+                lines.push(Vec::new());
+            }
+            lines.last_mut().expect("a line").push(name);
+        }
+        let lines: Vec<String> = lines.iter().map(|l| l.join(", ")).collect();
+        lines.join(",\n                       ")
+    };
+    format!(
+        "built-in names (any case):\n  lights:              {},\n                       \
+         or D and a temperature for CIE daylight (D5000 is 5000 K)\n  surfaces:            {}",
+        wrap(&speclab::data::lights::NAMES),
+        wrap(&speclab::data::SURFACE_NAMES),
+    )
+}
+
 /// Prints `message` as the program's error and returns exit status 2.
 pub fn fail(program: &str, message: impl std::fmt::Display) -> ExitCode {
     eprintln!("{program}: {message}");

@@ -27,7 +27,7 @@ use std::time::Instant;
 use output::{reference_error, report, write_png};
 use paint::{Grey, Spectral};
 use speclab::color::upsample::RgbSpace;
-use speclab::data::{Light, Patch};
+use speclab::data::{Light, Patch, lights};
 use speclab::sampling::binned::BinnedPdf;
 use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 use speclab::sampling::{reference, strata::Strata};
@@ -42,7 +42,8 @@ usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PA
               [--reference N] [--threads T] [--out PATH]
   --width, --height  image size in pixels (default 256 × 256)
   --spp N            paths per pixel (default 32)
-  --light NAME       a, d65 (default) or f11; --light-file reads any light
+  --light NAME       a built-in light (listed by --help; default D65), or D and a
+                     temperature for CIE daylight; --light-file reads any light
   --pdf P            how hero wavelengths are drawn (default uniform)
   --strata S         how a pixel's primary numbers are spread (default jitter)
   --bins B           sample visible and light pdfs from a histogram of B bins
@@ -124,8 +125,8 @@ fn parse_args() -> Result<Args, Box<dyn std::error::Error>> {
             Long("height") => a.height = parser.value()?.parse_with(|v| positive("height", v))?,
             Long("spp") => a.spp = parser.value()?.parse_with(|v| positive("path count", v))?,
             Long("light") => {
-                let light: Light = parser.value()?.parse()?;
-                (a.light, a.light_name) = (light.spectrum().clone(), light.to_string());
+                let name = parser.value()?.string()?;
+                (a.light, a.light_name) = (lights::named(&name)?.into_owned(), name.to_uppercase());
             }
             Long("light-file") => {
                 let path: PathBuf = parser.value()?.into();
@@ -156,7 +157,7 @@ fn parse_args() -> Result<Args, Box<dyn std::error::Error>> {
             Long("threads") => a.threads = parser.value()?.parse_with(|v| positive("thread count", v))?,
             Long("out") => a.out = parser.value()?.into(),
             Short('h') | Long("help") => {
-                println!("{USAGE}");
+                println!("{USAGE}\n{}", names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected().into()),
@@ -364,6 +365,11 @@ fn wavelength_pdf(a: &Args) -> Result<Box<dyn WavelengthPdf + Sync>, speclab::Er
         Some(bins) => Box::new(BinnedPdf::new(&*exact, bins)?),
         None => exact,
     })
+}
+
+/// The built-in lights, for the help text.
+fn names_help() -> String {
+    format!("built-in lights (any case): {}", lights::NAMES.join(", "))
 }
 
 fn fail(e: impl std::fmt::Display) -> ExitCode {

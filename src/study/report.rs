@@ -23,7 +23,7 @@ mod rules;
 mod texture;
 pub use chart::chart_csv;
 pub use plan::plan_text;
-pub use rules::{depth_table, rules_table};
+pub use rules::{depth_table, needs_table, rules_table};
 pub use texture::texture_table;
 
 use crate::color::display::{Display, Exposure, GamutMap, Srgb8};

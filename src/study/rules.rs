@@ -121,44 +121,46 @@ pub fn depth_table(
     trials: NonZeroUsize,
     seed: u64,
 ) -> Result<Vec<DepthRow>, StudyError> {
-    let hero = Method::HERO.with_sampling(Sampling { pdf: Pdf::Uniform, strata: Strata::Jittered });
     let mut out = Vec::new();
     for light in lights {
         for depth in Depth::ALL {
-            let rows = by_m(light, surfaces, depth)?;
-            let mut hero_n = None;
-            for n in hero.counts(CONVERGENCE_MAX_N) {
-                let count = NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
-                let mut within = true;
-                for s in surfaces {
-                    let stats = trials::method_at_depth(
-                        &light.spectrum,
-                        &s.spectrum,
-                        depth,
-                        hero,
-                        count,
-                        trials,
-                        seed,
-                    )?;
-                    within &= stats.rms_de00 < budget;
-                    if !within {
-                        break;
-                    }
-                }
-                if within {
-                    hero_n = Some(n);
-                    break;
-                }
-            }
-            out.push(DepthRow {
-                light: light.name.clone(),
-                depth,
-                center: smallest_stable(&rows, |r| r.center, budget),
-                boxed: smallest_stable(&rows, |r| r.boxed, budget),
-                fitted: smallest_stable(&rows, |r| r.fitted, budget),
-                hero: hero_n,
-            });
+            out.push(needs(light, surfaces, depth, budget, trials, seed)?);
         }
     }
     Ok(out)
+}
+
+/// What `light` needs at `depth` to keep every one of `surfaces` within
+/// `budget`: the smallest stable M of each fixed rule, and the smallest n
+/// of hero with uniform jittered wavelengths (see [`DepthRow`]).
+pub fn needs(
+    light: &Named,
+    surfaces: &[Named],
+    depth: Depth,
+    budget: f64,
+    trials: NonZeroUsize,
+    seed: u64,
+) -> Result<DepthRow, StudyError> {
+    let hero = Method::HERO.with_sampling(Sampling { pdf: Pdf::Uniform, strata: Strata::Jittered });
+    let rows = by_m(light, surfaces, depth)?;
+    let mut hero_n = None;
+    'counts: for n in hero.counts(CONVERGENCE_MAX_N) {
+        let count = NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
+        for s in surfaces {
+            let stats = trials::method_at_depth(&light.spectrum, &s.spectrum, depth, hero, count, trials, seed)?;
+            if stats.rms_de00 >= budget {
+                continue 'counts;
+            }
+        }
+        hero_n = Some(n);
+        break;
+    }
+    Ok(DepthRow {
+        light: light.name.clone(),
+        depth,
+        center: smallest_stable(&rows, |r| r.center, budget),
+        boxed: smallest_stable(&rows, |r| r.boxed, budget),
+        fitted: smallest_stable(&rows, |r| r.fitted, budget),
+        hero: hero_n,
+    })
 }

@@ -80,6 +80,12 @@ fn canonical(name: &str, names: &[&str]) -> String {
     names.iter().find(|n| n.eq_ignore_ascii_case(name)).map_or_else(|| name.to_uppercase(), |n| n.to_string())
 }
 
+/// Every built-in light, named (`data::lights::ALL`).
+#[must_use]
+pub fn every_light() -> Vec<Named> {
+    Light::all().map(|l| Named::new(l.to_string(), l.spectrum().clone())).collect()
+}
+
 /// The three appendix lights, named.
 #[must_use]
 pub fn builtin_lights() -> Vec<Named> {

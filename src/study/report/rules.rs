@@ -53,3 +53,22 @@ pub fn depth_table(out: &mut impl Write, rows: &[DepthRow], budget: f64) -> io::
     }
     Ok(())
 }
+
+/// A Markdown table of what each light needs (one depth), each row led by
+/// `label` of it (the light, or the surfaces and the light).
+pub fn needs_table(
+    out: &mut impl Write,
+    rows: &[DepthRow],
+    budget: f64,
+    head: &str,
+    label: impl Fn(&DepthRow) -> String,
+) -> io::Result<()> {
+    let count = |c: Option<usize>| c.map_or_else(|| "> 64".to_string(), |c| c.to_string());
+    writeln!(out, "| {head} | fitted, stable M | box, stable M | centre, stable M | hero jitter, n (RMS < {budget}) |")?;
+    writeln!(out, "|---|---:|---:|---:|---:|")?;
+    for r in rows {
+        let hero = r.hero.map_or_else(|| "> 4096".to_string(), |n| n.to_string());
+        writeln!(out, "| {} | {} | {} | {} | {hero} |", label(r), count(r.fitted), count(r.boxed), count(r.center))?;
+    }
+    Ok(())
+}
