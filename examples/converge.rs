@@ -16,9 +16,9 @@ use std::process::ExitCode;
 
 use common::{fail, finish};
 use speclab::Role;
+use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::strata::Strata;
 use speclab::study::StudyError;
-use speclab::study::sampling::{Pdf, Sampling};
 use speclab::study::scene::{self, Choice, Depth};
 use speclab::study::{convergence, report};
 
@@ -47,7 +47,7 @@ struct Args {
     all: bool,
     csv: bool,
     summary: bool,
-    pdfs: Option<Vec<Pdf>>,
+    pdfs: Option<Vec<PdfKind>>,
     strata: Option<Vec<Strata>>,
 }
 
@@ -81,7 +81,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("pdf") => {
                 let v = parser.value()?.string()?;
                 a.pdfs = Some(if v == "all" {
-                    Pdf::ALL.to_vec()
+                    PdfKind::ALL.to_vec()
                 } else {
                     vec![v.parse().map_err(|e: speclab::Error| e.to_string())?]
                 });
@@ -108,8 +108,10 @@ fn parse_args() -> Result<Args, lexopt::Error> {
 /// Every pdf × strata asked for; all of them for a summary that names none.
 fn samplings(args: &Args) -> Vec<Sampling> {
     let every = args.summary && args.pdfs.is_none() && args.strata.is_none();
-    let pdfs =
-        args.pdfs.clone().unwrap_or_else(|| if every { Pdf::ALL.to_vec() } else { vec![Pdf::Uniform] });
+    let pdfs = args
+        .pdfs
+        .clone()
+        .unwrap_or_else(|| if every { PdfKind::ALL.to_vec() } else { vec![PdfKind::Uniform] });
     let strata =
         args.strata.clone().unwrap_or_else(|| if every { Strata::ALL.to_vec() } else { vec![Strata::None] });
     pdfs.iter().flat_map(|&pdf| strata.iter().map(move |&strata| Sampling { pdf, strata })).collect()

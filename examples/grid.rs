@@ -84,8 +84,12 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("depth") => args.grid.depth = parser.value()?.parse()?,
             Long("csv") => args.csv = true,
             Long("texture") => args.texture = true,
-            Long("light") => chosen(&mut args.lights, &mut own_lights, Choice::Name(parser.value()?.string()?)),
-            Long("light-file") => chosen(&mut args.lights, &mut own_lights, Choice::File(parser.value()?.into())),
+            Long("light") => {
+                chosen(&mut args.lights, &mut own_lights, Choice::Name(parser.value()?.string()?))
+            }
+            Long("light-file") => {
+                chosen(&mut args.lights, &mut own_lights, Choice::File(parser.value()?.into()))
+            }
             Long("surface") => {
                 chosen(&mut args.surfaces, &mut own_surfaces, Choice::Name(parser.value()?.string()?))
             }

@@ -76,11 +76,9 @@ pub enum Error {
     /// A rule of box buckets asked for as wavelengths: its values are
     /// means over its buckets, not values at wavelengths.
     BoxRule,
-    /// A light with no power where the observer sees, within 380–730 nm: no
-    /// wavelength pdf can follow it.
-    DarkLight,
-    /// A density with no mass over 380–730 nm (or a mass that is not
-    /// finite): nothing to sample.
+    /// A light or a density with no mass where the observer sees, within
+    /// 380–730 nm (or a mass that is not finite): nothing to follow,
+    /// sample or fit.
     NoMass,
     /// A blackbody temperature that is not finite and positive (kelvin).
     Temperature {
@@ -146,12 +144,11 @@ impl fmt::Display for Error {
                 "expected a rule whose values are taken at its wavelengths, found box buckets \
                  (their values are means over the buckets)"
             ),
-            Error::NoMass => {
-                write!(f, "expected a density with finite positive mass over 380-730 nm, found none")
-            }
-            Error::DarkLight => {
-                write!(f, "expected a light with power where the observer sees (380-730 nm), found none")
-            }
+            Error::NoMass => write!(
+                f,
+                "expected a light or density with finite positive mass where the observer sees \
+                 (380-730 nm), found none"
+            ),
             Error::Temperature { kelvin } => {
                 write!(f, "expected a finite positive temperature in kelvin, found {kelvin}")
             }
@@ -248,32 +245,3 @@ impl From<ReadError> for Error {
         }
     }
 }
-
-/// `Display` and `FromStr` (any case) for an enum of named choices:
-/// `named_choices!(Light, "a built-in light": A => "A", D65 => "D65")`. An
-/// unknown name is an [`Error::UnknownName`] listing the names.
-macro_rules! named_choices {
-    ($ty:ident, $what:literal: $($variant:ident => $name:literal),+ $(,)?) => {
-        impl ::std::fmt::Display for $ty {
-            /// The name used on command lines, in tables and in CSV.
-            fn fmt(&self, f: &mut ::std::fmt::Formatter<'_>) -> ::std::fmt::Result {
-                f.write_str(match self { $($ty::$variant => $name),+ })
-            }
-        }
-        impl ::std::str::FromStr for $ty {
-            type Err = $crate::error::Error;
-            /// The choice with this name, in any case.
-            fn from_str(s: &str) -> ::std::result::Result<Self, Self::Err> {
-                $(if s.eq_ignore_ascii_case($name) {
-                    return Ok($ty::$variant);
-                })+
-                Err($crate::error::Error::UnknownName {
-                    what: $what,
-                    expected: &[$($name),+],
-                    found: s.to_string(),
-                })
-            }
-        }
-    };
-}
-pub(crate) use named_choices;

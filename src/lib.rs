@@ -87,6 +87,7 @@ pub mod error;
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod io;
+mod names;
 pub mod sampling;
 pub mod spectrum;
 #[cfg(feature = "study")]

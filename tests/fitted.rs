@@ -137,7 +137,7 @@ fn what_cannot_be_fitted_is_an_error() {
     let black = TabulatedSpectrum::new(vec![380.0, 730.0], vec![0.0, 0.0], Role::Light).unwrap();
     for lights in [vec![], vec![&black as &dyn Spectrum], vec![&lights::A as &dyn Spectrum, &black]] {
         let err = Rule::fit(&lights, 4).unwrap_err();
-        assert!(matches!(err, Error::DarkLight), "{err}");
+        assert!(matches!(err, Error::NoMass), "{err}");
     }
     // A light the observer sees in X and Y but not at all in Z still fits.
     let red = TabulatedSpectrum::new(vec![380.0, 599.0, 600.0, 730.0], vec![0.0, 0.0, 1.0, 1.0], Role::Light)

@@ -1,8 +1,8 @@
 //! The floors hold: every file of `src/` uses only its own floor and those
 //! below it (`ARCHITECTURE.md`, "Floors"):
 //!
-//! 0. `error.rs`, and `speclab_tables`' error, range, validation and
-//!    interpolation;
+//! 0. `error.rs`, `names.rs`, and `speclab_tables`' error, range,
+//!    validation and interpolation;
 //! 1. `spectrum/` (the interpolant, validation, range, the observer's tables);
 //! 2. `color/`;
 //! 3. `sampling/`;
@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 /// The floor of a top-level module of the crate.
 fn module_floor(module: &str) -> Option<usize> {
     Some(match module {
-        "error" => 0,
+        "error" | "names" => 0,
         "spectrum" | "data" => 1,
         "color" => 2,
         "sampling" => 3,

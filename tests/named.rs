@@ -175,11 +175,31 @@ fn spectra_by_name() {
     assert!(speclab::data::surface_named("Kryptonite").is_err());
 }
 
-/// A renderer's own light that keeps a cache reaches the reference's fast
-/// path, as the built-in tables do.
+/// A light keeps what is computed from it, one way: its reference
+/// weights, its pdf tables and its fitted rules live in its cache (a clone
+/// starts empty).
 #[test]
-fn a_cache_is_kept_by_the_spectrum() {
-    let cache = Cache::new();
-    assert_eq!(format!("{cache:?}"), "Cache { weights: None }");
-    assert_eq!(cache.clone(), Cache::default());
+fn a_light_keeps_what_is_computed_from_it() {
+    use speclab::sampling::choice::{ChosenPdf, PdfKind};
+    use speclab::sampling::fitted::FittedRules;
+    let light = lights::F2.clone();
+    let cache = light.cache().expect("tables keep a cache");
+    assert_eq!(format!("{cache:?}"), "Cache { weights: None, derived: 0 }");
+    let _ = speclab::sampling::reference::xyz(&light, &speclab::data::patches::G4);
+    let tables = [PdfKind::Light, PdfKind::Light, PdfKind::Balanced].map(|k| k.for_light(&light));
+    let [Ok(ChosenPdf::Table(a)), Ok(ChosenPdf::Table(b)), Ok(ChosenPdf::Table(c))] = tables else {
+        panic!("tables for a bright light")
+    };
+    assert!(std::sync::Arc::ptr_eq(&a, &b) && !std::sync::Arc::ptr_eq(&a, &c), "kept once per kind");
+    let rules = FittedRules::of(&light).expect("a bright light");
+    assert!(std::ptr::eq(
+        rules.rule(8).expect("M"),
+        FittedRules::of(&light).expect("kept").rule(8).expect("M")
+    ));
+    assert_eq!(format!("{cache:?}"), "Cache { weights: Some(36), derived: 3 }");
+    assert_eq!(
+        format!("{:?}", light.clone().cache().expect("a cache")),
+        "Cache { weights: None, derived: 0 }"
+    );
+    assert_eq!(Cache::new(), Cache::default());
 }

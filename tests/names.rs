@@ -51,10 +51,10 @@ fn core_choices() {
 #[cfg(feature = "study")]
 #[test]
 fn study_choices() {
+    use speclab::sampling::choice::PdfKind;
     use speclab::study::method::Method;
     use speclab::study::remarks::Normalization;
-    use speclab::study::sampling::Pdf;
-    round_trip(&Pdf::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
+    round_trip(&PdfKind::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
     round_trip(&Normalization::ALL, &["none", "power", "luminance"], "a normalisation");
     let methods = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];
     round_trip(&Method::ALL, &methods, "a method");

@@ -102,10 +102,10 @@ fn dark_lights_are_errors() {
     for light in [&dark, &beyond] {
         for result in [LightPdf::light(light), LightPdf::balanced(light)] {
             let err = result.expect_err("no power where the observer sees");
-            assert!(matches!(err, Error::DarkLight));
+            assert!(matches!(err, Error::NoMass));
             assert_eq!(
                 err.to_string(),
-                "expected a light with power where the observer sees (380-730 nm), found none"
+                "expected a light or density with finite positive mass where the observer sees (380-730 nm), found none"
             );
         }
     }

@@ -11,12 +11,12 @@
 
 use std::num::NonZeroUsize;
 
+use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::strata::Strata;
 use speclab::study::StudyError;
 use speclab::study::cost::{Config, Cost};
 use speclab::study::method::Method;
 use speclab::study::plan::{self, Request, Verdict};
-use speclab::study::sampling::{Pdf, Sampling};
 use speclab::study::scene::{Named, builtin_lights, builtin_surfaces};
 use speclab::study::trials;
 
@@ -32,7 +32,7 @@ fn model() -> Vec<(Config, Cost)> {
     let mut out = Vec::new();
     for sampling in Sampling::all() {
         for method in [Method::RANDOM, Method::HERO].map(|m| m.with_sampling(sampling)) {
-            let per = if matches!(sampling.pdf, Pdf::Light | Pdf::Balanced) { 60.0 } else { 15.0 };
+            let per = if matches!(sampling.pdf, PdfKind::Light | PdfKind::Balanced) { 60.0 } else { 15.0 };
             let extra = if sampling.strata == Strata::Kronecker { 1.0 } else { 0.0 };
             for n in method.counts(4096) {
                 let ns = method.evaluations(count(n)) as f64 * per + extra;

@@ -54,7 +54,7 @@
 
 use crate::color::srgb::{self, LinearSrgb, SRGB_TO_XYZ};
 use crate::color::xyz::Xyz;
-use crate::error::named_choices;
+use crate::names::named_choices;
 
 /// A positive factor that linear colours are multiplied by before display.
 #[derive(Clone, Copy, Debug, PartialEq)]

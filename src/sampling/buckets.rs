@@ -27,7 +27,7 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use crate::error::named_choices;
+use crate::names::named_choices;
 use crate::spectrum::data::{
     CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,
     CIE_Z_COEFFS, CIE_Z_LAMBDA,

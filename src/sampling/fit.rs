@@ -93,12 +93,12 @@ pub(crate) struct Problem {
 }
 
 impl Problem {
-    /// The problem for `lights`; an [`Error::DarkLight`] if there are none
+    /// The problem for `lights`; an [`Error::NoMass`] if there are none
     /// or one has no power the observer sees (a white that is zero, or not
     /// finite, in every channel).
     pub(crate) fn new(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
         if lights.is_empty() {
-            return Err(Error::DarkLight);
+            return Err(Error::NoMass);
         }
         let m = moments();
         let mut problem = Problem {
@@ -121,7 +121,7 @@ impl Problem {
         let white = integrate::white(light);
         let scale = white.iter().copied().fold(0.0, f64::max);
         if !(scale.is_finite() && scale > 0.0) {
-            return Err(Error::DarkLight);
+            return Err(Error::NoMass);
         }
         let white = white.map(|w| w / scale);
         let l: [f64; CANDIDATES] = std::array::from_fn(|j| light.eval(candidate(j)) / scale);

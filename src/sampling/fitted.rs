@@ -36,6 +36,8 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+use std::sync::{Arc, OnceLock};
+
 use crate::error::Error;
 use crate::sampling::fit::{CANDIDATES, Problem};
 use crate::sampling::rule::{MAX_M, Rule, check_m};
@@ -56,7 +58,7 @@ impl std::fmt::Debug for FitProblem {
 }
 
 impl FitProblem {
-    /// The problem for `lights`; an [`Error::DarkLight`] as in
+    /// The problem for `lights`; an [`Error::NoMass`] as in
     /// [`Rule::fit`].
     pub fn new(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
         Problem::new(lights).map(FitProblem)
@@ -74,10 +76,61 @@ impl FitProblem {
 impl Rule {
     /// The rule of `m` wavelengths fitted to `lights` (one to a few; the
     /// scene's). An [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`]; an
-    /// [`Error::DarkLight`] for no lights or one whose white is not
-    /// positive in X, Y and Z.
+    /// [`Error::NoMass`] for no lights or one whose white is not positive
+    /// in X, Y and Z.
     pub fn fit(lights: &[&dyn Spectrum], m: usize) -> Result<Rule, Error> {
         check_m("a fitted wavelength count", m)?;
         Ok(FitProblem::new(lights)?.rule(m))
+    }
+}
+
+/// The rules fitted to one light, every M fitted once: kept by the light
+/// if it has a [`Cache`](crate::spectrum::Cache), so that asking again
+/// (another M, another surface, another trial) costs a lookup.
+///
+/// ```
+/// use speclab::data::lights;
+/// use speclab::sampling::fitted::FittedRules;
+/// let f11 = FittedRules::of(&lights::F11)?;
+/// assert_eq!(f11.rule(10)?.m(), 10);
+/// assert!(std::ptr::eq(f11.rule(10)?, FittedRules::of(&lights::F11)?.rule(10)?)); // kept
+/// # Ok::<(), speclab::Error>(())
+/// ```
+#[derive(Clone)]
+pub struct FittedRules(Arc<Fits>);
+
+impl std::fmt::Debug for FittedRules {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let fitted: Vec<usize> = (1..=MAX_M).filter(|&m| self.0.rules[m - 1].get().is_some()).collect();
+        f.debug_struct("FittedRules").field("fitted", &fitted).finish_non_exhaustive()
+    }
+}
+
+/// A light's fit problem and its rules by M.
+struct Fits {
+    problem: FitProblem,
+    rules: [OnceLock<Rule>; MAX_M],
+}
+
+impl FittedRules {
+    /// The rules of `light` (the light's own, if it keeps a cache); an
+    /// [`Error::NoMass`] as in [`Rule::fit`].
+    pub fn of(light: &(impl Spectrum + ?Sized)) -> Result<Self, Error> {
+        let make = || {
+            FitProblem::new(&[&light])
+                .map(|problem| Fits { problem, rules: [const { OnceLock::new() }; MAX_M] })
+        };
+        match light.cache() {
+            Some(cache) => cache.derived(0, make).map(FittedRules),
+            None => make().map(|f| FittedRules(Arc::new(f))),
+        }
+    }
+
+    /// The rule of `m` wavelengths, fitted on first use: the same rule as
+    /// [`Rule::fit`]`(&[light], m)`. An [`Error::Count`] unless
+    /// `1 ≤ m ≤` [`MAX_M`].
+    pub fn rule(&self, m: usize) -> Result<&Rule, Error> {
+        check_m("a fitted wavelength count", m)?;
+        Ok(self.0.rules[m - 1].get_or_init(|| self.0.problem.rule(m)))
     }
 }

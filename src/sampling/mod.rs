@@ -70,6 +70,7 @@
 
 pub mod binned;
 pub mod buckets;
+pub mod choice;
 mod fit;
 mod fit_search;
 pub mod fitted;

@@ -202,10 +202,10 @@ impl LightPdf {
     /// `p ∝ S(λ)·Σ꜀ alpha꜀·c̄꜀(λ)` for any spectrum `S` and observer weights
     /// `alpha` (each finite and non-negative; others count as 0): exact
     /// where `S` is piecewise polynomial (see `light_pdf.rs`). An
-    /// [`Error::DarkLight`] if that has no mass over 380–730 nm.
+    /// [`Error::NoMass`] if that has no mass over 380–730 nm.
     pub fn weighted(spectrum: &impl Spectrum, alpha: [f64; 3]) -> Result<Self, Error> {
         let alpha = alpha.map(|a| if a.is_finite() && a > 0.0 { a } else { 0.0 });
-        PiecewisePdf::new(spectrum, alpha).map(|table| LightPdf { table }).ok_or(Error::DarkLight)
+        PiecewisePdf::new(spectrum, alpha).map(|table| LightPdf { table }).ok_or(Error::NoMass)
     }
 }
 

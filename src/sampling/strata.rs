@@ -32,7 +32,7 @@
 
 use rand::{Rng, RngExt};
 
-use crate::error::named_choices;
+use crate::names::named_choices;
 
 /// How an estimate's primary numbers are spread.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -1,13 +1,16 @@
-//! What a spectrum keeps of the work done on it: a [`Cache`].
+//! What a spectrum keeps of the work done on it: a [`Cache`], the one
+//! place a light's precomputed data lives.
 //!
 //! Used as a light, a spectrum's exact reference weights for reflectances
 //! on a grid (see `weights.rs` and `sampling::PreparedLight`) take about
-//! 20 µs to compute and make every later exact XYZ a dot product. A
-//! spectrum that holds a `Cache` and returns it from
-//! [`Spectrum::cache`](super::Spectrum::cache) keeps them, computed on
-//! first use, for the first grid it is used with: tables do, and so can a
-//! renderer's own light type. A cache is part of no spectrum's value: a
-//! clone starts empty, and equality ignores it.
+//! 20 µs to compute and make every later exact XYZ a dot product; its
+//! wavelength pdfs (`sampling::choice`) are tabulated in about 7 µs; the
+//! normal equations of its fitted rules (`sampling::fitted`) take tens of
+//! milliseconds. A spectrum that holds a `Cache` and returns it from
+//! [`Spectrum::cache`](super::Spectrum::cache) keeps each of them, computed
+//! on first use: tables do, and so can a renderer's own light type. A
+//! cache is part of no spectrum's value: a clone starts empty, and
+//! equality ignores it.
 //!
 //! ```
 //! use speclab::spectrum::{Cache, FnSpectrum, Spectrum};
@@ -26,7 +29,8 @@
 //! assert!((fast.y - slow.y).abs() < 1e-12 * slow.y);
 //! ```
 
-use std::sync::OnceLock;
+use std::any::{Any, TypeId};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use crate::spectrum::validate::Interpolation;
 
@@ -34,7 +38,12 @@ use crate::spectrum::validate::Interpolation;
 #[derive(Default)]
 pub struct Cache {
     weights: OnceLock<Weights>,
+    /// What the floors above keep, by type and key.
+    derived: Mutex<Vec<Derived>>,
 }
+
+/// One value kept for a floor above: its type, a key, the value.
+type Derived = (TypeId, u64, Arc<dyn Any + Send + Sync>);
 
 impl Clone for Cache {
     /// An empty cache: what is kept belongs to the value that computed it.
@@ -52,7 +61,11 @@ impl PartialEq for Cache {
 
 impl std::fmt::Debug for Cache {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Cache").field("weights", &self.weights.get().map(|w| w.grid().len())).finish()
+        let derived = self.derived.lock().map_or(0, |d| d.len());
+        f.debug_struct("Cache")
+            .field("weights", &self.weights.get().map(|w| w.grid().len()))
+            .field("derived", &derived)
+            .finish()
     }
 }
 
@@ -60,7 +73,33 @@ impl Cache {
     /// An empty cache (also `Cache::default()`).
     #[must_use]
     pub const fn new() -> Cache {
-        Cache { weights: OnceLock::new() }
+        Cache { weights: OnceLock::new(), derived: Mutex::new(Vec::new()) }
+    }
+
+    /// The value of type `T` kept under `key`, or `make`'s, kept now (an
+    /// error from `make` is returned and nothing kept). `make` runs outside
+    /// the lock; if two threads race, the first value kept wins.
+    pub(crate) fn derived<T: Any + Send + Sync, E>(
+        &self,
+        key: u64,
+        make: impl FnOnce() -> Result<T, E>,
+    ) -> Result<Arc<T>, E> {
+        let id = TypeId::of::<T>();
+        let find = |d: &[Derived]| {
+            d.iter()
+                .find(|(t, k, _)| *t == id && *k == key)
+                .and_then(|(_, _, v)| Arc::clone(v).downcast::<T>().ok())
+        };
+        if let Some(kept) = self.derived.lock().ok().and_then(|d| find(&d)) {
+            return Ok(kept);
+        }
+        let made = Arc::new(make()?);
+        let Ok(mut derived) = self.derived.lock() else { return Ok(made) };
+        if let Some(kept) = find(&derived) {
+            return Ok(kept);
+        }
+        derived.push((id, key, Arc::clone(&made) as Arc<dyn Any + Send + Sync>));
+        Ok(made)
     }
 
     /// The kept weights, computing them with `compute` if none are kept.

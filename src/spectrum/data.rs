@@ -49,7 +49,8 @@ use std::borrow::Cow;
 use std::fmt;
 use std::str::FromStr;
 
-use crate::error::{Error, named_choices};
+use crate::error::Error;
+use crate::names::named_choices;
 use crate::spectrum::TabulatedSpectrum;
 
 mod generated {

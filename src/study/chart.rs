@@ -19,11 +19,11 @@
 
 use std::num::NonZeroUsize;
 
+use crate::sampling::choice::{PdfKind, Sampling};
 use crate::sampling::strata::Strata;
 use crate::study::cost::{self, Config, Cost};
 use crate::study::error::StudyError;
 use crate::study::method::Method;
-use crate::study::sampling::{Pdf, Sampling};
 use crate::study::scene::{Depth, Named};
 use crate::study::trials;
 
@@ -34,14 +34,16 @@ pub const CHART_MAX_N: usize = 1024;
 /// assignment's random, hero with every strata under the uniform pdf, hero
 /// with every other pdf under jittered numbers, both bucket rules, and the
 /// rule fitted to the light. A pdf
-/// or strata added to [`Pdf::ALL`] or [`Strata::ALL`] is charted with no
+/// or strata added to [`PdfKind::ALL`] or [`Strata::ALL`] is charted with no
 /// change here.
 #[must_use]
 pub fn curves() -> Vec<Method> {
     let hero = |pdf, strata| Method::HERO.with_sampling(Sampling { pdf, strata });
     let mut out = vec![Method::Reference, Method::RANDOM];
-    out.extend(Strata::ALL.map(|strata| hero(Pdf::Uniform, strata)));
-    out.extend(Pdf::ALL.into_iter().filter(|&p| p != Pdf::Uniform).map(|pdf| hero(pdf, Strata::Jittered)));
+    out.extend(Strata::ALL.map(|strata| hero(PdfKind::Uniform, strata)));
+    out.extend(
+        PdfKind::ALL.into_iter().filter(|&p| p != PdfKind::Uniform).map(|pdf| hero(pdf, Strata::Jittered)),
+    );
     out.extend([Method::CENTER, Method::BOX, Method::FITTED]);
     out
 }
@@ -194,12 +196,12 @@ mod tests {
         let curves = curves();
         // Reference, random, hero × every strata, hero × every other pdf, 2
         // bucket rules, fitted.
-        assert_eq!(curves.len(), 2 + Strata::ALL.len() + Pdf::ALL.len() - 1 + 3);
+        assert_eq!(curves.len(), 2 + Strata::ALL.len() + PdfKind::ALL.len() - 1 + 3);
         assert_eq!(curves.last(), Some(&Method::FITTED));
         for (i, a) in curves.iter().enumerate() {
             assert!(curves[i + 1..].iter().all(|b| b != a), "{a:?} twice");
         }
-        for pdf in Pdf::ALL.into_iter().filter(|&p| p != Pdf::Uniform) {
+        for pdf in PdfKind::ALL.into_iter().filter(|&p| p != PdfKind::Uniform) {
             let hero = Method::HERO.with_sampling(Sampling { pdf, strata: Strata::Jittered });
             assert!(curves.contains(&hero), "{hero:?}");
         }

@@ -23,12 +23,12 @@ use std::num::NonZeroUsize;
 
 use crate::color::LinearSrgb;
 use crate::sampling::buckets::BucketRule;
+use crate::sampling::choice::Sampling;
 use crate::sampling::hero::USUAL_K;
 use crate::study::error::StudyError;
 use crate::study::method::Method;
 use crate::study::perceptual;
 use crate::study::remarks::Viewing;
-use crate::study::sampling::Sampling;
 use crate::study::scene::{Depth, Named};
 use crate::study::{texture, trials};
 
@@ -84,7 +84,7 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
     let (l, r) = (&light.spectrum, &surface.spectrum);
     let techniques = [
         (Method::Reference, s.n, "reference".to_string()),
-        (Method::Random { sampling: s.sampling }, s.n, format!("random n={}", s.n)),
+        (Method::Hero { k: 1, sampling: s.sampling }, s.n, format!("random n={}", s.n)),
         (Method::Hero { k: s.k, sampling: s.sampling }, s.n, format!("hero n={} K={}", s.n, s.k)),
         (Method::Buckets { rule: BucketRule::Center }, s.m, format!("center M={}", s.m)),
         (Method::Buckets { rule: BucketRule::BoxAverage }, s.m, format!("box M={}", s.m)),

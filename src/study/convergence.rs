@@ -11,7 +11,8 @@
 //! ```
 //! use std::num::NonZeroUsize;
 //! use speclab::study::convergence::{self, CONVERGENCE_MAX_N};
-//! use speclab::study::{method::Method, sampling::Sampling, scene::{Choice, Depth}};
+//! use speclab::sampling::choice::Sampling;
+//! use speclab::study::{method::Method, scene::{Choice, Depth}};
 //! use speclab::Role;
 //! let light = Choice::Name("D65".into()).resolve(Role::Light)?;
 //! let patch = Choice::Name("A1".into()).resolve(Role::Reflectance)?;
@@ -25,9 +26,9 @@
 
 use std::num::NonZeroUsize;
 
+use crate::sampling::choice::Sampling;
 use crate::study::error::StudyError;
 use crate::study::method::Method;
-use crate::study::sampling::Sampling;
 use crate::study::scene::{Depth, Named};
 use crate::study::threshold::{self, Crossing};
 use crate::study::trials::{self, Stats};

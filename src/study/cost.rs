@@ -29,10 +29,10 @@ use std::time::Instant;
 use rand::SeedableRng;
 use rand::rngs::StdRng;
 
+use crate::sampling::fitted::FittedRules;
 use crate::sampling::rule::Rule;
 use crate::spectrum::TabulatedSpectrum;
 use crate::study::error::StudyError;
-use crate::study::fits;
 use crate::study::method::Method;
 
 /// A method with its sample count n or bucket count M.
@@ -85,7 +85,7 @@ pub fn measure(
 ) -> Result<Cost, StudyError> {
     let m = config.count.get();
     let rule = match config.method {
-        Method::Fitted => fits::for_lights(&[light])?.rule(m)?.clone(),
+        Method::Fitted => FittedRules::of(light)?.rule(m)?.clone(),
         Method::Buckets { rule } => Rule::buckets(m, rule)?,
         method => {
             let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));

@@ -20,9 +20,9 @@
 use std::num::NonZeroUsize;
 
 use crate::color::Xyz;
+use crate::sampling::choice::Sampling;
 use crate::study::error::StudyError;
 use crate::study::method::{Method, derive_seed};
-use crate::study::sampling::Sampling;
 use crate::study::scene::{Depth, Named};
 
 /// What a grid run computes: its counts, seed and sampling.
@@ -87,7 +87,7 @@ impl GridOptions {
             for surface in surfaces {
                 for (&method, prepared) in methods.iter().zip(&prepared) {
                     let (samples, seed) = match method {
-                        Method::Random { .. } => (self.n, derive_seed(self.seed, 2 * cell)),
+                        Method::Hero { k: 1, .. } => (self.n, derive_seed(self.seed, 2 * cell)),
                         Method::Hero { .. } => (self.n, derive_seed(self.seed, 2 * cell + 1)),
                         _ => (self.m, 0),
                     };

@@ -3,20 +3,22 @@
 //! | method | wavelengths | `samples` means |
 //! |---|---|---|
 //! | `reference` | exact integration | (ignored; reported as 0) |
-//! | `random` | n × 1 wavelength | n |
+//! | `random` | n × 1 wavelength (hero sampling of width 1) | n |
 //! | `hero` | n × K (hero + K − 1 rotations; K = 4 by default) | n |
 //! | `regular-center` | M bucket centers | M |
 //! | `regular-box` | M bucket means | M |
 //! | `fitted` | M wavelengths fitted to the light ([`Rule::fit`]) | M |
 //!
-//! Random and hero draw their wavelengths as their [`Sampling`] says (a pdf
-//! and a strata; uniform and independent by default, as the assignment).
+//! Random and hero are one method, of width 1 or K, and draw their
+//! wavelengths as their [`Sampling`] says (a pdf and a strata; uniform and
+//! independent by default, as the assignment), through the one dispatch
+//! of a chosen pdf ([`ChosenPdf`]).
 //! They draw from `StdRng::seed_from_u64(seed)`, so a seed fixes the
 //! result. Use [`derive_seed`] to give independent runs their own seeds.
 //! Buckets take any M from 1 to [`MAX_M`] at run time
 //! ([`Rule::buckets`]), with the same numbers as `RegularSpectrum<M>`;
-//! fitted rules any M up to [`MAX_M`], fitted to the prepared light once per
-//! process ([`crate::study::fits`]).
+//! fitted rules any M up to [`MAX_M`], fitted to the light once and kept by
+//! it ([`FittedRules`]); the light keeps its pdf tables too.
 //!
 //! Every method estimates a path of any [`Depth`]: light × surface^depth.
 //! Random and hero sample the product at their wavelengths; buckets
@@ -45,14 +47,14 @@ use rand::{Rng, SeedableRng};
 use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::buckets::BucketRule;
+use crate::sampling::choice::{ChosenPdf, Sampling};
+use crate::sampling::fitted::FittedRules;
 use crate::sampling::hero::{self, USUAL_K};
-use crate::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
+use crate::sampling::pdf::WavelengthPdf;
 use crate::sampling::reference;
 use crate::sampling::rule::{MAX_M, Rule};
 use crate::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::study::error::StudyError;
-use crate::study::fits::{self, Fits};
-use crate::study::sampling::{Pdf, Sampling};
 use crate::study::scene::Depth;
 
 /// How wavelengths are chosen.
@@ -60,13 +62,8 @@ use crate::study::scene::Depth;
 pub enum Method {
     /// Exact integration of the interpolants.
     Reference,
-    /// n single wavelengths (`HeroSample<1>`).
-    Random {
-        /// Their pdf and strata.
-        sampling: Sampling,
-    },
-    /// n hero samples of `k` wavelengths (`HeroSample<k>`, k from 1 to
-    /// [`hero::MAX_WIDTH`]).
+    /// n hero samples of `k` wavelengths each (`HeroSample<k>`, k from 1 to
+    /// [`hero::MAX_WIDTH`]); `k = 1` is the assignment's random sampling.
     Hero {
         /// Wavelengths per sample.
         k: usize,
@@ -83,8 +80,9 @@ pub enum Method {
 }
 
 impl Method {
-    /// Random sampling as the assignment has it: uniform, independent.
-    pub const RANDOM: Method = Method::Random { sampling: Sampling::DEFAULT };
+    /// Random sampling as the assignment has it: one wavelength per
+    /// sample, uniform, independent.
+    pub const RANDOM: Method = Method::Hero { k: 1, sampling: Sampling::DEFAULT };
 
     /// Hero sampling of the usual width, [`USUAL_K`], uniform, independent.
     pub const HERO: Method = Method::Hero { k: USUAL_K, sampling: Sampling::DEFAULT };
@@ -102,6 +100,9 @@ impl Method {
     pub const ALL: [Method; 6] =
         [Method::Reference, Method::RANDOM, Method::HERO, Method::CENTER, Method::BOX, Method::FITTED];
 
+    /// The names of [`Method::ALL`], in its order.
+    pub const NAMES: [&str; 6] = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];
+
     /// True for the methods with a fixed set of M wavelengths (buckets and
     /// fitted rules): deterministic and biased.
     #[must_use]
@@ -114,7 +115,6 @@ impl Method {
     #[must_use]
     pub fn with_sampling(self, sampling: Sampling) -> Method {
         match self {
-            Method::Random { .. } => Method::Random { sampling },
             Method::Hero { k, .. } => Method::Hero { k, sampling },
             other => other,
         }
@@ -124,7 +124,7 @@ impl Method {
     #[must_use]
     pub fn sampling(self) -> Option<Sampling> {
         match self {
-            Method::Random { sampling } | Method::Hero { sampling, .. } => Some(sampling),
+            Method::Hero { sampling, .. } => Some(sampling),
             _ => None,
         }
     }
@@ -157,30 +157,25 @@ impl Method {
     #[must_use]
     pub fn counts(self, max_n: usize) -> Vec<usize> {
         match self {
-            Method::Random { .. } | Method::Hero { .. } => {
-                std::iter::successors(Some(1usize), |&n| n.checked_mul(2))
-                    .take_while(|&n| n <= max_n)
-                    .collect()
-            }
+            Method::Hero { .. } => std::iter::successors(Some(1usize), |&n| n.checked_mul(2))
+                .take_while(|&n| n <= max_n)
+                .collect(),
             Method::Buckets { .. } | Method::Fitted => (1..=MAX_M).collect(),
             Method::Reference => Vec::new(),
         }
     }
 
-    /// This method ready for `light` at depth 1: its pdf table built once,
-    /// or its fitted rules found (see [`Prepared::xyz`]).
-    pub fn prepare(self, light: &TabulatedSpectrum) -> Result<Prepared<'_>, StudyError> {
-        let table = match self.sampling() {
-            Some(s) => s.pdf.table(light)?,
-            None => None,
-        };
-        let fits = if self == Method::Fitted { Some(fits::for_lights(&[light])?) } else { None };
-        Ok(Prepared { method: self, light, table, fits, depth: Depth::ONE })
+    /// This method ready for `light` at depth 1: its pdf and its fitted
+    /// rules at hand, kept by the light (see [`Estimator::xyz`]).
+    pub fn prepare(self, light: &TabulatedSpectrum) -> Result<Estimator<'_>, StudyError> {
+        let pdf = self.sampling().map(|s| s.pdf.for_light(light)).transpose()?;
+        let rules = if self == Method::Fitted { Some(FittedRules::of(light)?) } else { None };
+        Ok(Estimator { method: self, light, pdf, rules, depth: Depth::ONE })
     }
 
     /// XYZ of `light × surface` by this method with `samples` samples or
-    /// buckets. Errors for a hero width or bucket count that is not compiled
-    /// (1 to [`hero::MAX_WIDTH`], 1 to [`MAX_M`]), and for a pdf that cannot
+    /// buckets. Errors for a hero width or a count out of range (1 to
+    /// [`hero::MAX_WIDTH`], 1 to [`MAX_M`]), and for a pdf that cannot
     /// follow the light.
     pub fn xyz(
         self,
@@ -194,17 +189,17 @@ impl Method {
 }
 
 impl fmt::Display for Method {
-    /// The name used in tables and CSV: `reference`, `random`, `hero` (any
-    /// K; the sampling has columns of its own), `regular-center`,
-    /// `regular-box`.
+    /// The name used in tables and CSV: `reference`, `random` (hero of
+    /// width 1), `hero` (any other width; the sampling has columns of its
+    /// own), `regular-center`, `regular-box`, `fitted`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
-            Method::Reference => "reference",
-            Method::Random { .. } => "random",
-            Method::Hero { .. } => "hero",
-            Method::Buckets { rule: BucketRule::Center } => "regular-center",
-            Method::Buckets { rule: BucketRule::BoxAverage } => "regular-box",
-            Method::Fitted => "fitted",
+            Method::Reference => Method::NAMES[0],
+            Method::Hero { k: 1, .. } => Method::NAMES[1],
+            Method::Hero { .. } => Method::NAMES[2],
+            Method::Buckets { rule: BucketRule::Center } => Method::NAMES[3],
+            Method::Buckets { rule: BucketRule::BoxAverage } => Method::NAMES[4],
+            Method::Fitted => Method::NAMES[5],
         })
     }
 }
@@ -213,27 +208,27 @@ impl FromStr for Method {
     type Err = Error;
     /// The method with this name (any case), sampling uniform and independent.
     fn from_str(name: &str) -> Result<Method, Error> {
-        let found = Method::ALL.into_iter().find(|m| m.to_string().eq_ignore_ascii_case(name));
-        found.ok_or_else(|| Error::UnknownName {
+        let found = Method::NAMES.iter().position(|n| n.eq_ignore_ascii_case(name));
+        found.map(|i| Method::ALL[i]).ok_or_else(|| Error::UnknownName {
             what: "a method",
-            expected: &["reference", "random", "hero", "regular-center", "regular-box", "fitted"],
+            expected: &Method::NAMES,
             found: name.to_string(),
         })
     }
 }
 
-/// A method with its pdf table built, or its rules found, for one light,
-/// and the depth of the paths it estimates.
+/// A method ready for one light (its pdf tabulated, its rules found, both
+/// kept by the light), and the depth of the paths it estimates.
 #[derive(Clone, Debug)]
-pub struct Prepared<'a> {
+pub struct Estimator<'a> {
     method: Method,
     light: &'a TabulatedSpectrum,
-    table: Option<LightPdf>,
-    fits: Option<std::sync::Arc<Fits>>,
+    pdf: Option<ChosenPdf>,
+    rules: Option<FittedRules>,
     depth: Depth,
 }
 
-impl Prepared<'_> {
+impl Estimator<'_> {
     /// The same, estimating paths of `depth` surfaces.
     #[must_use]
     pub fn at_depth(mut self, depth: Depth) -> Self {
@@ -243,8 +238,8 @@ impl Prepared<'_> {
 
     /// The fitted rule of `m` wavelengths, for a fitted method.
     pub fn rule(&self, m: usize) -> Result<Option<&Rule>, StudyError> {
-        Ok(match &self.fits {
-            Some(f) => Some(f.rule(m)?),
+        Ok(match &self.rules {
+            Some(rules) => Some(rules.rule(m)?),
             None => None,
         })
     }
@@ -260,63 +255,9 @@ impl Prepared<'_> {
         self.xyz_with_rng(surface, samples, &mut StdRng::seed_from_u64(seed))
     }
 
-    /// [`Prepared::xyz`] with the random methods drawing from `rng`.
+    /// [`Estimator::xyz`] with the random methods drawing from `rng`: the
+    /// one dispatch over the methods.
     pub fn xyz_with_rng<R: Rng + ?Sized>(
-        &self,
-        surface: &TabulatedSpectrum,
-        samples: NonZeroUsize,
-        rng: &mut R,
-    ) -> Result<Xyz, StudyError> {
-        let light = self.light;
-        // The estimate with the density's own type: no dynamic dispatch per
-        // wavelength, so that timings are a renderer's.
-        macro_rules! with_pdf {
-            ($pdf:expr, |$p:ident| $estimate:expr) => {
-                match ($pdf, &self.table) {
-                    (Pdf::Uniform, _) => {
-                        let $p = &Uniform;
-                        $estimate
-                    }
-                    (Pdf::Visible, _) => {
-                        let $p = &Visible;
-                        $estimate
-                    }
-                    (_, Some($p)) => $estimate,
-                    (_, None) => Err(Error::DarkLight),
-                }
-            };
-        }
-        if self.depth != Depth::ONE {
-            return self.at_depth_with_rng(surface, samples, rng);
-        }
-        Ok(match self.method {
-            Method::Reference => reference::xyz(light, surface),
-            Method::Random { sampling } => with_pdf!(sampling.pdf, |pdf| hero::estimate_width(
-                1,
-                light,
-                surface,
-                samples,
-                pdf,
-                sampling.strata,
-                rng
-            ))?,
-            Method::Hero { k, sampling } => with_pdf!(sampling.pdf, |pdf| hero::estimate_width(
-                k,
-                light,
-                surface,
-                samples,
-                pdf,
-                sampling.strata,
-                rng
-            ))?,
-            Method::Buckets { rule } => Rule::buckets(samples.get(), rule)?.xyz(light, surface),
-            Method::Fitted => self.fitted(samples.get())?.xyz_of_product(&[light, surface]),
-        })
-    }
-
-    /// [`Prepared::xyz_with_rng`] for a path of [`Prepared::at_depth`]'s
-    /// depth, more than one surface.
-    fn at_depth_with_rng<R: Rng + ?Sized>(
         &self,
         surface: &TabulatedSpectrum,
         samples: NonZeroUsize,
@@ -326,42 +267,29 @@ impl Prepared<'_> {
         let path = depth.path(surface);
         let mut factors: Vec<&dyn Spectrum> = vec![light];
         factors.extend_from_slice(path.factors());
+        let m = samples.get();
         Ok(match self.method {
+            Method::Reference if depth == Depth::ONE => reference::xyz(light, surface),
             Method::Reference => depth.exact(light, surface),
-            Method::Random { .. } | Method::Hero { .. } => {
-                let (k, sampling) = match self.method {
-                    Method::Hero { k, sampling } => (k, sampling),
-                    _ => (1, self.method.sampling().unwrap_or_default()),
-                };
-                let pdf = self.pdf().ok_or(Error::DarkLight)?;
-                hero::estimate_width(k, light, &path, samples, pdf, sampling.strata, rng)?
+            Method::Hero { k, sampling } => {
+                let pdf = self.pdf.as_ref().ok_or(Error::NoMass)?;
+                // At depth 1 the surface itself: no product in the loop.
+                if depth == Depth::ONE {
+                    hero::estimate_width(k, light, surface, samples, pdf, sampling.strata, rng)?
+                } else {
+                    hero::estimate_width(k, light, &path, samples, pdf, sampling.strata, rng)?
+                }
             }
-            Method::Buckets { rule } => Rule::buckets(samples.get(), rule)?.xyz_of_product(&factors),
-            Method::Fitted => self.fitted(samples.get())?.xyz_of_product(&factors),
+            Method::Buckets { rule } => Rule::buckets(m, rule)?.xyz_of_product(&factors),
+            Method::Fitted => self.rule(m)?.ok_or(Error::NoMass)?.xyz_of_product(&factors),
         })
-    }
-
-    /// The fitted rule of `m` wavelengths (an error for other methods).
-    fn fitted(&self, m: usize) -> Result<&Rule, StudyError> {
-        let fitted = self.rule(m)?;
-        fitted.ok_or(StudyError::Spectra(Error::Count {
-            what: "a fitted wavelength count",
-            found: m,
-            min: 1,
-            max: MAX_M,
-        }))
     }
 
     /// The method's density for the light, if it draws wavelengths: for
     /// checking estimates against theory (`study::variance`).
     #[must_use]
     pub fn pdf(&self) -> Option<&dyn WavelengthPdf> {
-        let pdf = self.method.sampling()?.pdf;
-        match (pdf, &self.table) {
-            (Pdf::Uniform, _) => Some(&Uniform),
-            (Pdf::Visible, _) => Some(&Visible),
-            (_, table) => table.as_ref().map(|t| t as &dyn WavelengthPdf),
-        }
+        self.pdf.as_ref().map(|p| p as &dyn WavelengthPdf)
     }
 }
 

@@ -39,16 +39,16 @@ use std::num::NonZeroUsize;
 use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::buckets::BucketRule;
+use crate::sampling::choice::Sampling;
+use crate::sampling::fitted::{FitProblem, FittedRules};
 use crate::sampling::reference;
 use crate::sampling::rule::{MAX_M, Rule};
-use crate::spectrum::{Spectrum, TabulatedSpectrum};
+use crate::spectrum::Spectrum;
 use crate::study::convergence::CONVERGENCE_MAX_N;
 use crate::study::cost::{self, Config, Cost};
 use crate::study::error::StudyError;
-use crate::study::fits;
 use crate::study::method::{Method, derive_seed};
 use crate::study::perceptual;
-use crate::study::sampling::Sampling;
 use crate::study::scene::{Depth, Named};
 use crate::study::trials::{self, Stats};
 
@@ -295,13 +295,22 @@ impl<'a> Scene<'a> {
     /// For M = 1 … 64, the worst ΔE00 of the rule fitted to all of
     /// `lights` at once, and where.
     fn fitted_errors(&self, lights: &[Named]) -> Result<Vec<(f64, String)>, StudyError> {
-        let spectra: Vec<&TabulatedSpectrum> = lights.iter().map(|l| &l.spectrum).collect();
-        let fits = fits::for_lights(&spectra)?;
+        let rules = match lights {
+            // One light keeps its own rules.
+            [light] => FittedRules::of(&light.spectrum)
+                .and_then(|f| (1..=MAX_M).map(|m| f.rule(m).cloned()).collect()),
+            _ => {
+                let spectra: Vec<&dyn Spectrum> =
+                    lights.iter().map(|l| &l.spectrum as &dyn Spectrum).collect();
+                FitProblem::new(&spectra).map(|p| (1..=MAX_M).map(|m| p.rule(m)).collect())
+            }
+        };
+        let rules: Vec<Rule> = rules?;
         self.worst_by_m(MAX_M, |m, l, s| {
             let path = self.depth.path(&s.spectrum);
             let mut factors: Vec<&dyn Spectrum> = vec![&l.spectrum];
             factors.extend_from_slice(path.factors());
-            Ok(fits.rule(m)?.xyz_of_product(&factors))
+            Ok(rules[m - 1].xyz_of_product(&factors))
         })
     }
 

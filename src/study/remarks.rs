@@ -28,7 +28,7 @@
 
 use crate::color::Xyz;
 use crate::color::adaptation::bradford;
-use crate::error::named_choices;
+use crate::names::named_choices;
 use crate::sampling::reference;
 use crate::spectrum::data::lights;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, TabulatedSpectrum};

@@ -19,16 +19,16 @@
 use std::num::NonZeroUsize;
 
 use crate::sampling::buckets::BucketRule;
+use crate::sampling::choice::{PdfKind, Sampling};
+use crate::sampling::fitted::FittedRules;
 use crate::sampling::reference;
 use crate::sampling::rule::{MAX_M, Rule};
 use crate::sampling::strata::Strata;
 use crate::spectrum::Spectrum;
 use crate::study::convergence::CONVERGENCE_MAX_N;
 use crate::study::error::StudyError;
-use crate::study::fits;
 use crate::study::method::Method;
 use crate::study::perceptual;
-use crate::study::sampling::{Pdf, Sampling};
 use crate::study::scene::{Depth, Named};
 use crate::study::trials;
 
@@ -56,7 +56,7 @@ pub fn by_m(light: &Named, surfaces: &[Named], depth: Depth) -> Result<Vec<RuleR
     let l = &light.spectrum;
     let white = reference::white(l);
     let exact: Vec<_> = surfaces.iter().map(|s| depth.exact(l, &s.spectrum)).collect();
-    let fits = fits::for_lights(&[l])?;
+    let fits = FittedRules::of(l)?;
     (1..=MAX_M)
         .map(|m| {
             let (mut fitted, mut center, mut boxed) = (0.0f64, 0.0f64, 0.0f64);
@@ -141,13 +141,14 @@ pub fn needs(
     trials: NonZeroUsize,
     seed: u64,
 ) -> Result<DepthRow, StudyError> {
-    let hero = Method::HERO.with_sampling(Sampling { pdf: Pdf::Uniform, strata: Strata::Jittered });
+    let hero = Method::HERO.with_sampling(Sampling { pdf: PdfKind::Uniform, strata: Strata::Jittered });
     let rows = by_m(light, surfaces, depth)?;
     let mut hero_n = None;
     'counts: for n in hero.counts(CONVERGENCE_MAX_N) {
         let count = NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
         for s in surfaces {
-            let stats = trials::method_at_depth(&light.spectrum, &s.spectrum, depth, hero, count, trials, seed)?;
+            let stats =
+                trials::method_at_depth(&light.spectrum, &s.spectrum, depth, hero, count, trials, seed)?;
             if stats.rms_de00 >= budget {
                 continue 'counts;
             }

@@ -46,13 +46,13 @@ use crate::color::Xyz;
 use crate::color::adaptation::bradford;
 use crate::color::display::{Display, Exposure, GamutMap, Srgb8};
 use crate::sampling::buckets::BucketRule;
+use crate::sampling::choice::{PdfKind, Sampling};
 use crate::sampling::reference;
 use crate::sampling::strata::Strata;
 use crate::spectrum::TabulatedSpectrum;
 use crate::study::error::StudyError;
-use crate::study::method::{Method, Prepared, derive_seed};
+use crate::study::method::{Estimator, Method, derive_seed};
 use crate::study::remarks;
-use crate::study::sampling::{Pdf, Sampling};
 use crate::study::scene::Named;
 
 /// The largest swatch side [`render`] draws.
@@ -109,7 +109,7 @@ impl Column {
         let (n, m) = (format!("N={}", self.samples), format!("M={}", self.samples));
         match self.method {
             Method::Reference => ["REFERENCE".into(), "EXACT".into(), String::new()],
-            Method::Random { sampling } => ["RANDOM".into(), how(sampling), n],
+            Method::Hero { k: 1, sampling } => ["RANDOM".into(), how(sampling), n],
             Method::Hero { k, sampling } => [format!("HERO K={k}"), how(sampling), n],
             Method::Buckets { rule: BucketRule::Center } => ["CENTER".into(), "BUCKETS".into(), m],
             Method::Buckets { rule: BucketRule::BoxAverage } => ["BOX".into(), "BUCKETS".into(), m],
@@ -124,7 +124,7 @@ fn how(sampling: Sampling) -> String {
     let pdf = sampling.pdf.to_string().to_uppercase();
     match (sampling.pdf, sampling.strata) {
         (_, Strata::None) => pdf,
-        (Pdf::Uniform, strata) => strata.to_string().to_uppercase(),
+        (PdfKind::Uniform, strata) => strata.to_string().to_uppercase(),
         (_, strata) => format!("{pdf}+{}", strata.to_string().to_uppercase()),
     }
 }
@@ -141,8 +141,8 @@ pub fn columns(s: &SwatchOptions) -> Vec<Column> {
         column(Method::CENTER, s.m),
         column(Method::BOX, s.m),
         column(Method::FITTED, s.m),
-        column(jitter(Pdf::Uniform), s.n),
-        column(jitter(Pdf::Light), s.n),
+        column(jitter(PdfKind::Uniform), s.n),
+        column(jitter(PdfKind::Light), s.n),
     ]
 }
 
@@ -202,7 +202,7 @@ impl Look {
 /// What one swatch needs: a flat pixel, or an estimator and its look.
 enum Job<'a> {
     Flat(Srgb8),
-    Noisy { prepared: Box<Prepared<'a>>, surface: &'a TabulatedSpectrum, samples: NonZeroUsize, look: Look },
+    Noisy { prepared: Box<Estimator<'a>>, surface: &'a TabulatedSpectrum, samples: NonZeroUsize, look: Look },
 }
 
 /// Renders every light × surface × column of [`columns`], on all cores.
@@ -214,7 +214,7 @@ pub fn render(lights: &[Named], surfaces: &[Named], s: &SwatchOptions) -> Result
     let mut jobs = Vec::with_capacity(lights.len() * surfaces.len() * columns.len());
     for light in lights {
         let look = Look::new(&light.spectrum, s);
-        let prepared: Vec<Prepared> =
+        let prepared: Vec<Estimator> =
             columns.iter().map(|c| c.method.prepare(&light.spectrum)).collect::<Result<_, _>>()?;
         for surface in surfaces.iter().map(|n| &n.spectrum) {
             for (column, prepared) in columns.iter().zip(&prepared) {

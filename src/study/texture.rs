@@ -20,6 +20,7 @@ use std::num::NonZeroUsize;
 use crate::color::LinearSrgb;
 use crate::color::upsample::RgbSpace;
 use crate::sampling::buckets::BucketRule;
+use crate::sampling::choice::{PdfKind, Sampling};
 use crate::sampling::hero::USUAL_K;
 use crate::sampling::reference;
 use crate::sampling::strata::Strata;
@@ -27,7 +28,6 @@ use crate::spectrum::RgbAlbedo;
 use crate::study::error::StudyError;
 use crate::study::method::Method;
 use crate::study::perceptual;
-use crate::study::sampling::{Pdf, Sampling};
 use crate::study::scene::Named;
 use crate::study::trials;
 
@@ -84,7 +84,7 @@ pub fn texture(surface: &Named) -> Result<(LinearSrgb, RgbAlbedo, bool), StudyEr
 pub fn rows(lights: &[Named], surfaces: &[Named], o: &TextureOptions) -> Result<Vec<TextureRow>, StudyError> {
     let nz = |n: usize| NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);
     let hero =
-        Method::Hero { k: USUAL_K, sampling: Sampling { pdf: Pdf::Uniform, strata: Strata::Jittered } };
+        Method::Hero { k: USUAL_K, sampling: Sampling { pdf: PdfKind::Uniform, strata: Strata::Jittered } };
     let mut out = Vec::with_capacity(lights.len() * surfaces.len());
     for light in lights {
         let white = reference::white(&light.spectrum);

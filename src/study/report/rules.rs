@@ -64,11 +64,21 @@ pub fn needs_table(
     label: impl Fn(&DepthRow) -> String,
 ) -> io::Result<()> {
     let count = |c: Option<usize>| c.map_or_else(|| "> 64".to_string(), |c| c.to_string());
-    writeln!(out, "| {head} | fitted, stable M | box, stable M | centre, stable M | hero jitter, n (RMS < {budget}) |")?;
+    writeln!(
+        out,
+        "| {head} | fitted, stable M | box, stable M | centre, stable M | hero jitter, n (RMS < {budget}) |"
+    )?;
     writeln!(out, "|---|---:|---:|---:|---:|")?;
     for r in rows {
         let hero = r.hero.map_or_else(|| "> 4096".to_string(), |n| n.to_string());
-        writeln!(out, "| {} | {} | {} | {} | {hero} |", label(r), count(r.fitted), count(r.boxed), count(r.center))?;
+        writeln!(
+            out,
+            "| {} | {} | {} | {} | {hero} |",
+            label(r),
+            count(r.fitted),
+            count(r.boxed),
+            count(r.center)
+        )?;
     }
     Ok(())
 }

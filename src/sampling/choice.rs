@@ -1,0 +1,154 @@
+//! Wavelength densities chosen by name at run time: the one named choice
+//! of a pdf ([`PdfKind`]: uniform, visible, light, balanced), the density
+//! it makes for a light ([`ChosenPdf`]), and a pdf with a way of spreading
+//! the primary numbers ([`Sampling`]). The study and the path tracer both
+//! take their densities from here.
+//!
+//! ```
+//! use speclab::data::lights;
+//! use speclab::sampling::choice::{PdfKind, Sampling};
+//! use speclab::sampling::{pdf::WavelengthPdf, strata::Strata, HeroSample};
+//! let s = Sampling { pdf: PdfKind::Light, strata: Strata::Jittered };
+//! assert_eq!(s.to_string(), "light/jitter");
+//! assert_eq!("balanced".parse::<PdfKind>()?, PdfKind::Balanced);
+//! let f11 = s.pdf.for_light(&lights::F11)?;
+//! assert!(f11.pdf(545.0) > f11.pdf(500.0)); // F11's line at 545 nm
+//! let h = HeroSample::<4>::from_pdf(0.3, &f11);
+//! assert!(h.pdf().iter().all(|&p| p > 0.0));
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use std::fmt;
+use std::sync::Arc;
+
+use crate::error::Error;
+use crate::names::named_choices;
+use crate::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
+use crate::sampling::strata::Strata;
+use crate::spectrum::Spectrum;
+
+/// Which density wavelengths are drawn from.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum PdfKind {
+    /// [`Uniform`]: `1/W`.
+    #[default]
+    Uniform,
+    /// [`Visible`]: pbrt-v4's visible-wavelength density.
+    Visible,
+    /// [`LightPdf::light`]: `∝ L·(x̄ + ȳ + z̄)`.
+    Light,
+    /// [`LightPdf::balanced`]: `∝ L·Σ c̄꜀/white꜀`.
+    Balanced,
+}
+
+named_choices!(PdfKind, "a pdf": Uniform => "uniform", Visible => "visible", Light => "light", Balanced => "balanced");
+
+impl PdfKind {
+    /// All choices, in the order of their names.
+    pub const ALL: [PdfKind; 4] = [PdfKind::Uniform, PdfKind::Visible, PdfKind::Light, PdfKind::Balanced];
+
+    /// True for the densities that follow a light (tabulated for it).
+    #[must_use]
+    pub fn follows_light(self) -> bool {
+        matches!(self, PdfKind::Light | PdfKind::Balanced)
+    }
+
+    /// This density for `light`: the two that follow it are tabulated (about
+    /// 7 µs) and kept by the light if it has a
+    /// [`Cache`](crate::spectrum::Cache); an [`Error::NoMass`] for a light
+    /// the observer cannot see.
+    pub fn for_light(self, light: &(impl Spectrum + ?Sized)) -> Result<ChosenPdf, Error> {
+        let table = |key: u64, make: fn(&dyn Spectrum) -> Result<LightPdf, Error>| match light.cache() {
+            Some(cache) => cache.derived(key, || make(&light)),
+            None => make(&light).map(Arc::new),
+        };
+        Ok(match self {
+            PdfKind::Uniform => ChosenPdf::Uniform,
+            PdfKind::Visible => ChosenPdf::Visible,
+            PdfKind::Light => ChosenPdf::Table(table(1, |l| LightPdf::light(&l))?),
+            PdfKind::Balanced => ChosenPdf::Table(table(2, |l| LightPdf::balanced(&l))?),
+        })
+    }
+}
+
+/// A density made by a [`PdfKind`]: the one place a choice of density is
+/// dispatched (a `match` per draw, no allocation, no virtual call).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ChosenPdf {
+    /// [`Uniform`].
+    Uniform,
+    /// [`Visible`].
+    Visible,
+    /// A density tabulated for a light ([`LightPdf`]), shared with the
+    /// light that keeps it.
+    Table(Arc<LightPdf>),
+}
+
+impl WavelengthPdf for ChosenPdf {
+    #[inline]
+    fn sample(&self, u: f64) -> f64 {
+        self.sample_with_inv_pdf(u).0
+    }
+
+    #[inline]
+    fn pdf(&self, lambda: f64) -> f64 {
+        match self {
+            ChosenPdf::Uniform => Uniform.pdf(lambda),
+            ChosenPdf::Visible => Visible.pdf(lambda),
+            ChosenPdf::Table(t) => t.pdf(lambda),
+        }
+    }
+
+    fn cdf(&self, lambda: f64) -> Option<f64> {
+        match self {
+            ChosenPdf::Uniform => Uniform.cdf(lambda),
+            ChosenPdf::Visible => Visible.cdf(lambda),
+            ChosenPdf::Table(t) => t.cdf(lambda),
+        }
+    }
+
+    #[inline]
+    fn inv_pdf(&self, lambda: f64) -> f64 {
+        match self {
+            ChosenPdf::Uniform => Uniform.inv_pdf(lambda),
+            ChosenPdf::Visible => Visible.inv_pdf(lambda),
+            ChosenPdf::Table(t) => t.inv_pdf(lambda),
+        }
+    }
+
+    #[inline]
+    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
+        match self {
+            ChosenPdf::Uniform => Uniform.sample_with_inv_pdf(u),
+            ChosenPdf::Visible => Visible.sample_with_inv_pdf(u),
+            ChosenPdf::Table(t) => t.sample_with_inv_pdf(u),
+        }
+    }
+}
+
+/// A pdf and a strata: how a random method draws its wavelengths.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Sampling {
+    /// The density.
+    pub pdf: PdfKind,
+    /// How the primary numbers are spread.
+    pub strata: Strata,
+}
+
+impl Sampling {
+    /// Uniform and independent: the assignment's random sampling.
+    pub const DEFAULT: Sampling = Sampling { pdf: PdfKind::Uniform, strata: Strata::None };
+
+    /// Every pdf × strata, uniform/none first.
+    #[must_use]
+    pub fn all() -> Vec<Sampling> {
+        PdfKind::ALL.iter().flat_map(|&pdf| Strata::ALL.map(|strata| Sampling { pdf, strata })).collect()
+    }
+}
+
+impl fmt::Display for Sampling {
+    /// `pdf/strata`, e.g. `light/jitter`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}/{}", self.pdf, self.strata)
+    }
+}
