@@ -96,7 +96,7 @@ pub mod study;
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;
 pub use rand;
-pub use sampling::{BoxAverage, Center, HeroSample, RegularSpectrum};
+pub use sampling::{BoxAverage, Center, HeroSample, RegularSpectrum, SampledWavelengths};
 pub use spectrum::{
     Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Role, SampledSpectrum, Spectrum, TabulatedSpectrum,
     data,

@@ -1,176 +1,49 @@
-//! A small spectral path tracer over speclab's renderer API (no `study`):
-//! a box of ColorChecker walls and spheres with an RGB-textured back wall,
-//! hero wavelengths (K = 4) from a chosen pdf and strata, Russian roulette
-//! on the throughput's luminance, both cores, a PNG through
-//! `color::display`. It renders twice, spectral and grey (the same paths
-//! with one number per surface), and prints the time per path vertex of
-//! each: the difference is speclab's share.
+//! A small path tracer over speclab's renderer API: a box of ColorChecker
+//! walls and spheres with an RGB-textured back wall, lit by one or two
+//! lights in the ceiling, with colour carried three ways (`--wavelengths`):
+//! hero wavelengths (K = 4, from a chosen pdf and strata), a rule of M
+//! wavelengths fitted to the scene's lights, or RGB triples. It renders
+//! twice, with colour and grey (the same paths, one number per surface),
+//! and prints the time per path vertex of each: the difference is the
+//! colour's share. `--exact` integrates each of the same paths exactly over
+//! wavelength and compares pixel by pixel; `--survey` does so for every way
+//! and prints the render-level speed against accuracy.
 //!
 //! ```text
 //! cargo run --release --example render
-//! cargo run --release --example render -- --light f11 --pdf light --spp 64 --reference 1024
-//! cargo run --release --example render -- --light-file examples/build-data/data/led.csv --spectra dense
+//! cargo run --release --example render -- --light f11 --wavelengths fitted --m 10 --exact
+//! cargo run --release --example render -- --light F11 --light A --survey --csv docs/render.csv
 //! ```
 
+mod args;
+mod exact;
 mod output;
 mod paint;
+#[cfg(feature = "study")]
+mod survey;
 mod tracer;
 
 use std::marker::PhantomData;
-use std::path::PathBuf;
 use std::process::ExitCode;
-use std::str::FromStr;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
-use output::{reference_error, report, write_png};
-use paint::{Grey, Spectral};
+use args::{Args, Mode};
+use exact::{ExactScene, PathRecord};
+use paint::{Fitted, Grey, Hero, Rgb};
 use speclab::color::upsample::RgbSpace;
-use speclab::data::{Light, Patch, lights};
+use speclab::data::Patch;
 use speclab::sampling::binned::BinnedPdf;
-use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
-use speclab::sampling::{reference, strata::Strata};
-use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Float, RgbAlbedo, Spectrum};
-use speclab::{LinearSrgb, Role, TabulatedSpectrum, Xyz, io::Load};
+use speclab::sampling::pdf::WavelengthPdf;
+use speclab::sampling::{reference, rule::Rule, strata::Strata};
+use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, RgbAlbedo, Spectrum};
+use speclab::{LinearSrgb, TabulatedSpectrum, Xyz};
 use tracer::{Material, Paint, Rng, Scene};
 
-const USAGE: &str = "\
-usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PATH]
-              [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
-              [--bins B | --exact-pdf] [--spectra exact|dense] [--precision f64|f32]
-              [--reference N] [--threads T] [--out PATH]
-  --width, --height  image size in pixels (default 256 × 256)
-  --spp N            paths per pixel (default 32)
-  --light NAME       a built-in light (listed by --help; default D65), or D and a
-                     temperature for CIE daylight; --light-file reads any light
-  --pdf P            how hero wavelengths are drawn (default uniform)
-  --strata S         how a pixel's primary numbers are spread (default jitter)
-  --bins B           sample visible and light pdfs from a histogram of B bins
-                     (BinnedPdf, default 256); --exact-pdf samples the
-                     density itself (inverting its CDF per wavelength)
-  --spectra S        exact tabulated spectra (default) or dense 1 nm tables
-  --precision P      the per-sample values' precision, f64 (default) or f32
-  --reference N      also render N paths per pixel and print the RMS ΔE*ab
-  --threads T        worker threads (default 2)
-  --out PATH         the PNG to write (default render.png)";
-
-/// The wavelength pdfs a renderer picks from.
-#[derive(Clone, Copy, Debug)]
-enum PdfChoice {
-    Uniform,
-    Visible,
-    Light,
-    Balanced,
-}
-
-impl FromStr for PdfChoice {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        match s.to_ascii_lowercase().as_str() {
-            "uniform" => Ok(PdfChoice::Uniform),
-            "visible" => Ok(PdfChoice::Visible),
-            "light" => Ok(PdfChoice::Light),
-            "balanced" => Ok(PdfChoice::Balanced),
-            _ => Err(format!("expected a pdf (uniform, visible, light or balanced), found {s:?}")),
-        }
-    }
-}
-
-struct Args {
-    width: usize,
-    height: usize,
-    spp: usize,
-    light: TabulatedSpectrum,
-    light_name: String,
-    pdf: PdfChoice,
-    strata: Strata,
-    dense: bool,
-    single: bool,
-    /// Bins of the histogram pdf, or `None` for the exact density.
-    bins: Option<usize>,
-    reference: Option<usize>,
-    threads: usize,
-    out: PathBuf,
-}
-
-fn positive(what: &str, v: &str) -> Result<usize, String> {
-    v.parse::<usize>()
-        .ok()
-        .filter(|&n| n > 0)
-        .ok_or_else(|| format!("expected a positive {what}, found {v:?}"))
-}
-
-fn parse_args() -> Result<Args, Box<dyn std::error::Error>> {
-    use lexopt::prelude::*;
-    let mut a = Args {
-        width: 256,
-        height: 256,
-        spp: 32,
-        light: Light::D65.spectrum().clone(),
-        light_name: "D65".into(),
-        pdf: PdfChoice::Uniform,
-        strata: Strata::Jittered,
-        dense: false,
-        single: false,
-        bins: Some(256),
-        reference: None,
-        threads: 2,
-        out: PathBuf::from("render.png"),
-    };
-    let mut parser = lexopt::Parser::from_env();
-    while let Some(arg) = parser.next()? {
-        match arg {
-            Long("width") => a.width = parser.value()?.parse_with(|v| positive("width", v))?,
-            Long("height") => a.height = parser.value()?.parse_with(|v| positive("height", v))?,
-            Long("spp") => a.spp = parser.value()?.parse_with(|v| positive("path count", v))?,
-            Long("light") => {
-                let name = parser.value()?.string()?;
-                (a.light, a.light_name) = (lights::named(&name)?.into_owned(), name.to_uppercase());
-            }
-            Long("light-file") => {
-                let path: PathBuf = parser.value()?.into();
-                a.light = Load::new(Role::Light).file(&path)?;
-                a.light_name = path.display().to_string();
-            }
-            Long("pdf") => a.pdf = parser.value()?.parse()?,
-            Long("strata") => a.strata = parser.value()?.parse()?,
-            Long("spectra") => {
-                a.dense = match parser.value()?.string()?.as_str() {
-                    "exact" => false,
-                    "dense" => true,
-                    other => return Err(format!("expected exact or dense spectra, found {other:?}").into()),
-                }
-            }
-            Long("precision") => {
-                a.single = match parser.value()?.string()?.as_str() {
-                    "f64" => false,
-                    "f32" => true,
-                    other => return Err(format!("expected f64 or f32, found {other:?}").into()),
-                }
-            }
-            Long("bins") => a.bins = Some(parser.value()?.parse_with(|v| positive("bin count", v))?),
-            Long("exact-pdf") => a.bins = None,
-            Long("reference") => {
-                a.reference = Some(parser.value()?.parse_with(|v| positive("path count", v))?)
-            }
-            Long("threads") => a.threads = parser.value()?.parse_with(|v| positive("thread count", v))?,
-            Long("out") => a.out = parser.value()?.into(),
-            Short('h') | Long("help") => {
-                println!("{USAGE}\n{}", names_help());
-                std::process::exit(0);
-            }
-            _ => return Err(arg.unexpected().into()),
-        }
-    }
-    if a.width.saturating_mul(a.height) > 1 << 24 {
-        return Err("expected at most 16 M pixels".into());
-    }
-    Ok(a)
-}
-
-/// The walls (floor, ceiling, back, left, right, front) and the spheres.
-fn scene() -> Scene {
+/// The walls (floor, ceiling, back, left, right, front), the spheres, and
+/// `lights` squares in the ceiling.
+fn scene(lights: usize) -> Scene {
     let patch = |p: Patch| Material::Patch(Patch::ALL.iter().position(|&q| q == p).unwrap_or(0));
     Scene {
         walls: [
@@ -182,6 +55,7 @@ fn scene() -> Scene {
             patch(Patch::A1),
         ],
         spheres: [([0.3, 0.15, 0.8], 0.15, patch(Patch::H4)), ([0.7, 0.12, 0.68], 0.12, patch(Patch::J4))],
+        lights: if lights > 1 { vec![[0.3, 0.7], [0.7, 0.7]] } else { vec![[0.5, 0.7]] },
     }
 }
 
@@ -205,171 +79,254 @@ fn seed(pass: u64, pixel: usize) -> u64 {
     (z ^ (z >> 31)) | 1
 }
 
-/// An image of mean XYZ per pixel, and the vertices its paths met.
-struct Render {
-    xyz: Vec<Xyz>,
-    vertices: u64,
-    seconds: f64,
+/// An image of mean XYZ per pixel (and, if asked, the exact image of the
+/// same paths), the vertices its paths met, and how long it took.
+pub struct Render {
+    pub xyz: Vec<Xyz>,
+    pub exact: Option<Vec<Xyz>>,
+    pub vertices: u64,
+    pub seconds: f64,
 }
 
-fn render<P: Paint>(scene: &Scene, paint: &P, a: &Args, spp: usize, pass: u64) -> Render {
-    let mut xyz = vec![Xyz::ZERO; a.width * a.height];
-    let rows = Mutex::new(xyz.chunks_mut(a.width).enumerate());
+/// Renders `spp` paths per pixel on `threads` threads; with `exact`, each
+/// path's exact colour too (not timed apart: time the render without it).
+pub fn render<P: Paint>(
+    scene: &Scene,
+    paint: &P,
+    a: &Args,
+    (spp, threads): (usize, usize),
+    pass: u64,
+    exact: Option<&ExactScene>,
+) -> Render {
+    let mut pixels = vec![(Xyz::ZERO, Xyz::ZERO); a.width * a.height];
+    let rows = Mutex::new(pixels.chunks_mut(a.width).enumerate());
     let vertices = AtomicU64::new(0);
     let start = Instant::now();
     std::thread::scope(|s| {
-        for _ in 0..a.threads {
+        for _ in 0..threads {
             s.spawn(|| {
                 let mut count = 0;
                 while let Some((y, row)) = rows.lock().map(|mut r| r.next()).ok().flatten() {
                     for (x, pixel) in row.iter_mut().enumerate() {
                         let mut rng = Rng(seed(pass, y * a.width + x));
                         let shift = rng.next();
-                        let mut sum = Xyz::ZERO;
+                        let (mut sum, mut truth) = (Xyz::ZERO, Xyz::ZERO);
                         for i in 0..spp {
-                            let u = if a.strata == Strata::Kronecker { shift } else { rng.next() };
-                            let path = paint.path(a.strata.point(i, spp, 4, u));
+                            let u = if a.sampling.strata == Strata::Kronecker { shift } else { rng.next() };
+                            let path = paint.path(a.sampling.strata.point(i, spp, 4, u));
                             let at = (
                                 (x as f64 + rng.next()) / a.width as f64,
                                 (y as f64 + rng.next()) / a.height as f64,
                             );
-                            let (value, n) = tracer::trace(scene, paint, &path, at, &mut rng);
+                            let (value, n) = match exact {
+                                None => tracer::trace(scene, paint, &path, at, &mut rng, &mut ()),
+                                Some(e) => {
+                                    let mut record = PathRecord::new();
+                                    let traced =
+                                        tracer::trace(scene, paint, &path, at, &mut rng, &mut record);
+                                    truth += e.xyz(&record);
+                                    traced
+                                }
+                            };
                             sum += value;
                             count += u64::from(n);
                         }
-                        *pixel = sum / spp as f64;
+                        *pixel = (sum / spp as f64, truth / spp as f64);
                     }
                 }
                 vertices.fetch_add(count, Ordering::Relaxed);
             });
         }
     });
-    Render { xyz, vertices: vertices.into_inner(), seconds: start.elapsed().as_secs_f64() }
+    let seconds = start.elapsed().as_secs_f64();
+    let (xyz, truth): (Vec<Xyz>, Vec<Xyz>) = pixels.into_iter().unzip();
+    Render { xyz, exact: exact.map(|_| truth), vertices: vertices.into_inner(), seconds }
 }
 
-/// Renders spectrally with `light`, `patches` and `observer`, three times per mode
-/// (spectral, grey, spectral, grey, …) keeping each mode's fastest run.
-fn spectral_and_grey<S: Spectrum + Sync, O: speclab::spectrum::Observer + Sync, T: Float>(
-    a: &Args,
-    spectral: &Spectral<'_, S, O, T>,
-    grey: &Grey,
-) -> (Render, Render) {
-    let scene = scene();
-    let (mut best_s, mut best_g): (Option<Render>, Option<Render>) = (None, None);
-    for _ in 0..3 {
-        let s = render(&scene, spectral, a, a.spp, 1);
-        let g = render(&scene, grey, a, a.spp, 1);
-        if best_s.as_ref().is_none_or(|b| s.seconds < b.seconds) {
-            best_s = Some(s);
-        }
-        if best_g.as_ref().is_none_or(|b| g.seconds < b.seconds) {
-            best_g = Some(g);
-        }
+/// The scene's spectra and what every way of painting needs.
+pub struct Setup {
+    pub scene: Scene,
+    pub lights: Vec<TabulatedSpectrum>,
+    pub patches: Vec<TabulatedSpectrum>,
+    pub colours: Vec<LinearSrgb>,
+    pub texture: Vec<RgbAlbedo>,
+    pub grey: Grey,
+    pub white: Xyz,
+}
+
+impl Setup {
+    fn new(a: &Args) -> Result<Self, speclab::Error> {
+        let lights: Vec<TabulatedSpectrum> = a.lights.iter().map(|(_, l)| l.clone()).collect();
+        let colours = texture_colours();
+        let texture = colours.iter().map(|&c| RgbAlbedo::new(c)).collect::<Result<Vec<_>, _>>()?;
+        let patches: Vec<TabulatedSpectrum> = Patch::ALL.iter().map(|p| p.spectrum().clone()).collect();
+        let white: Xyz = lights.iter().map(reference::white).sum();
+        let space = RgbSpace::srgb();
+        let under_all =
+            |s: &TabulatedSpectrum| lights.iter().map(|l| reference::xyz(l, s).y).sum::<f64>() / white.y;
+        let grey = Grey {
+            patches: patches.iter().map(under_all).collect(),
+            texture: colours.iter().map(|&c| space.xyz(c).y / space.white().y).collect(),
+            white,
+        };
+        Ok(Setup { scene: scene(lights.len()), lights, patches, colours, texture, grey, white })
     }
-    (best_s.expect("two runs"), best_g.expect("two runs"))
+
+    /// The exact image's spectra.
+    pub fn exact(&self) -> ExactScene {
+        ExactScene::new(&self.lights, &self.patches, &self.texture)
+    }
 }
 
 fn main() -> ExitCode {
-    let a = match parse_args() {
+    let a = match args::parse() {
         Ok(a) => a,
-        Err(e) => {
-            eprintln!("render: {e}\n(render --help lists the options)");
-            return ExitCode::from(2);
-        }
+        Err(e) => return fail(format!("{e}\n(render --help lists the options)")),
     };
-    let space = RgbSpace::srgb();
-    let colours = texture_colours();
-    let texture: Vec<RgbAlbedo> = match colours.iter().map(|&c| RgbAlbedo::new(c)).collect() {
-        Ok(t) => t,
+    let setup = match Setup::new(&a) {
+        Ok(s) => s,
         Err(e) => return fail(e),
     };
-    let pdf = match wavelength_pdf(&a) {
-        Ok(pdf) => pdf,
+    if a.survey {
+        #[cfg(feature = "study")]
+        return match survey::run(&a, &setup) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => fail(e),
+        };
+        #[cfg(not(feature = "study"))]
+        return fail("--survey needs speclab's study feature (on by default)");
+    }
+    let image = match paint_and_run(&a, &setup) {
+        Ok(image) => image,
         Err(e) => return fail(e),
     };
-    let white = reference::white(&a.light);
-    let grey = Grey {
-        patches: Patch::ALL.iter().map(|p| reference::xyz(&a.light, p.spectrum()).y / white.y).collect(),
-        texture: colours.iter().map(|&c| space.xyz(c).y / space.white().y).collect(),
-        white,
-    };
-    let image = match (a.dense, a.single) {
-        (false, false) => run::<_, _, f64>(&a, a.light.clone(), patches(), Cie1931, &texture, &*pdf, &grey),
-        (false, true) => run::<_, _, f32>(&a, a.light.clone(), patches(), Cie1931, &texture, &*pdf, &grey),
-        (true, false) => {
-            let dense = |s: &TabulatedSpectrum| DenseSpectrum::<f64>::new(s);
-            let observer = DenseObserver::<f64>::new();
-            run::<_, _, f64>(
-                &a,
-                dense(&a.light),
-                patches().map(|p| dense(&p)),
-                observer,
-                &texture,
-                &*pdf,
-                &grey,
-            )
-        }
-        (true, true) => {
-            let dense = |s: &TabulatedSpectrum| DenseSpectrum::<f32>::new(s);
-            let observer = DenseObserver::<f32>::new();
-            run::<_, _, f32>(
-                &a,
-                dense(&a.light),
-                patches().map(|p| dense(&p)),
-                observer,
-                &texture,
-                &*pdf,
-                &grey,
-            )
-        }
-    };
-    match write_png(&a, &image.xyz, white) {
+    match output::write_png(&a.out, a.width, a.height, &image.xyz, setup.white) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => fail(e),
     }
 }
 
-/// The built-in patches.
-fn patches() -> impl Iterator<Item = TabulatedSpectrum> {
-    Patch::ALL.iter().map(|p| p.spectrum().clone())
+/// Builds the paint `--wavelengths` asks for and runs it.
+fn paint_and_run(a: &Args, setup: &Setup) -> Result<Render, speclab::Error> {
+    match a.mode {
+        Mode::Rgb => Ok(run(a, setup, &Rgb::new(&setup.lights, &setup.patches, &setup.colours))),
+        Mode::Fitted => fitted(a, setup, a.m, Run(a, setup)),
+        Mode::Hero => {
+            let pdf = wavelength_pdf(a, setup)?;
+            let dense = |s: &TabulatedSpectrum| DenseSpectrum::<f64>::new(s);
+            let dense32 = |s: &TabulatedSpectrum| DenseSpectrum::<f32>::new(s);
+            let (l, p) = (&setup.lights, &setup.patches);
+            Ok(match (a.dense, a.single) {
+                (false, false) => {
+                    run(a, setup, &hero::<_, _, f64>(l.clone(), p.clone(), Cie1931, setup, &*pdf))
+                }
+                (false, true) => {
+                    run(a, setup, &hero::<_, _, f32>(l.clone(), p.clone(), Cie1931, setup, &*pdf))
+                }
+                (true, false) => {
+                    let (l, p) = (l.iter().map(dense).collect(), p.iter().map(dense).collect());
+                    run(a, setup, &hero::<_, _, f64>(l, p, DenseObserver::<f64>::new(), setup, &*pdf))
+                }
+                (true, true) => {
+                    let (l, p) = (l.iter().map(dense32).collect(), p.iter().map(dense32).collect());
+                    run(a, setup, &hero::<_, _, f32>(l, p, DenseObserver::<f32>::new(), setup, &*pdf))
+                }
+            })
+        }
+    }
 }
 
-/// Renders spectrally (and grey, for the timing) with these spectra,
-/// observer and precision; reports; returns the spectral image.
-fn run<S: Spectrum + Sync, O: speclab::spectrum::Observer + Sync, T: Float>(
-    a: &Args,
-    light: S,
-    patches: impl Iterator<Item = S>,
+/// The hero paint over these spectra.
+pub fn hero<'a, S, O, T>(
+    lights: Vec<S>,
+    patches: Vec<S>,
     observer: O,
-    texture: &[RgbAlbedo],
-    pdf: &(dyn WavelengthPdf + Sync),
-    grey: &Grey,
-) -> Render {
-    let spectral =
-        Spectral { light, patches: patches.collect(), texture, observer, pdf, precision: PhantomData::<T> };
-    let (s, g) = spectral_and_grey(a, &spectral, grey);
-    report(a, &s, &g);
-    reference_error(a, &spectral, s)
+    setup: &'a Setup,
+    pdf: &'a (dyn WavelengthPdf + Sync),
+) -> Hero<'a, S, O, T> {
+    Hero { lights, patches, texture: &setup.texture, observer, pdf, precision: PhantomData }
+}
+
+/// Something done with a paint, whatever its type (a visitor: each way of
+/// painting is its own type, monomorphised).
+pub trait WithPaint {
+    type Out;
+    fn go<P: Paint>(self, paint: &P) -> Self::Out;
+}
+
+/// Runs a paint as `render` does ([`run`]).
+struct Run<'a>(&'a Args, &'a Setup);
+
+impl WithPaint for Run<'_> {
+    type Out = Render;
+    fn go<P: Paint>(self, paint: &P) -> Render {
+        run(self.0, self.1, paint)
+    }
+}
+
+/// The rules of `m` wavelengths fitted to the scene's lights (shared
+/// wavelengths, each light its own weights), as a paint of the smallest
+/// compiled width that holds them (4, 8, 12, 16, 24, 32 or 64 lanes; the
+/// rest weigh nothing), in `--precision`, handed to `with`.
+pub fn fitted<W: WithPaint>(a: &Args, setup: &Setup, m: usize, with: W) -> Result<W::Out, speclab::Error> {
+    let lights: Vec<&dyn Spectrum> = setup.lights.iter().map(|l| l as &dyn Spectrum).collect();
+    let rules = Rule::fit_each(&lights, m)?;
+    let (l, p, t) = (&setup.lights, &setup.patches, &setup.texture);
+    macro_rules! lanes {
+        ($($cap:literal)*) => {
+            $(if m <= $cap {
+                return Ok(if a.single {
+                    with.go(&Fitted::<$cap, f32>::new(&rules, l, p, t)?)
+                } else {
+                    with.go(&Fitted::<$cap, f64>::new(&rules, l, p, t)?)
+                });
+            })*
+        };
+    }
+    lanes!(4 8 12 16 24 32 64);
+    Err(speclab::Error::Count { what: "a fitted wavelength count", found: m, min: 1, max: 64 })
+}
+
+/// Renders with `paint` and grey alternately, three times each (the
+/// fastest of each kept), reports the time per vertex and the colour's
+/// overhead, and, if asked, compares with the exact image and a reference.
+pub fn run<P: Paint>(a: &Args, setup: &Setup, paint: &P) -> Render {
+    let (mut best, mut best_grey): (Option<Render>, Option<Render>) = (None, None);
+    for _ in 0..3 {
+        let s = render(&setup.scene, paint, a, (a.spp, a.threads), 1, None);
+        let g = render(&setup.scene, &setup.grey, a, (a.spp, a.threads), 1, None);
+        if best.as_ref().is_none_or(|b| s.seconds < b.seconds) {
+            best = Some(s);
+        }
+        if best_grey.as_ref().is_none_or(|b| g.seconds < b.seconds) {
+            best_grey = Some(g);
+        }
+    }
+    let (image, grey) = (best.expect("three runs"), best_grey.expect("three runs"));
+    output::report(a, &image, &grey);
+    if a.exact {
+        let start = Instant::now();
+        let exact = setup.exact();
+        let prepared = start.elapsed().as_secs_f64();
+        let with_exact = render(&setup.scene, paint, a, (a.spp, a.threads), 1, Some(&exact));
+        output::exact_report(a, setup, &with_exact, image.seconds, prepared);
+    }
+    output::reference_error(a, setup, paint, &image);
+    image
 }
 
 /// The chosen density, as a histogram of `--bins` bins unless
-/// `--exact-pdf` (uniform needs neither).
-fn wavelength_pdf(a: &Args) -> Result<Box<dyn WavelengthPdf + Sync>, speclab::Error> {
-    let exact: Box<dyn WavelengthPdf + Sync> = match a.pdf {
-        PdfChoice::Uniform => return Ok(Box::new(Uniform)),
-        PdfChoice::Visible => Box::new(Visible),
-        PdfChoice::Light => Box::new(LightPdf::light(&a.light)?),
-        PdfChoice::Balanced => Box::new(LightPdf::balanced(&a.light)?),
-    };
-    Ok(match a.bins {
-        Some(bins) => Box::new(BinnedPdf::new(&*exact, bins)?),
-        None => exact,
+/// `--exact-pdf` (uniform needs neither); following all the lights.
+pub fn wavelength_pdf(a: &Args, setup: &Setup) -> Result<Box<dyn WavelengthPdf + Sync>, speclab::Error> {
+    let mut scene = speclab::spectrum::Mixture::new();
+    for l in &setup.lights {
+        scene = scene.with(1.0, l)?;
+    }
+    let exact = a.sampling.pdf.for_light(&scene)?;
+    Ok(match (a.bins, a.sampling.pdf) {
+        (_, speclab::sampling::choice::PdfKind::Uniform) | (None, _) => Box::new(exact),
+        (Some(bins), _) => Box::new(BinnedPdf::new(&exact, bins)?),
     })
-}
-
-/// The built-in lights, for the help text.
-fn names_help() -> String {
-    format!("built-in lights (any case): {}", lights::NAMES.join(", "))
 }
 
 fn fail(e: impl std::fmt::Display) -> ExitCode {

@@ -1,13 +1,16 @@
 //! The path tracer behind `render`: a closed box of ColorChecker walls, two
-//! spheres and an RGB-textured back wall, lit by a square light in the
-//! ceiling. Lambertian surfaces, next-event estimation to the light,
-//! cosine-weighted bounces, Russian roulette.
+//! spheres and an RGB-textured back wall, lit by one or two square lights
+//! in the ceiling. Lambertian surfaces, next-event estimation to a light
+//! chosen uniformly, cosine-weighted bounces, Russian roulette.
 //!
-//! One tracer serves two modes ([`Paint`]): spectral (hero samples of four
-//! wavelengths, `SampledSpectrum` throughput) and grey (one number per
-//! surface, no spectral work), so the example can time speclab's share.
+//! One tracer serves every way of carrying colour ([`Paint`]): hero
+//! wavelengths, a fitted rule, RGB triples, and grey (one number per
+//! surface, no colour work, so the example can time colour's share). A
+//! [`Record`] sees what a path met (its surfaces, and each light it saw
+//! with the scalar factor it came with), for the exact colour of the same
+//! path.
 
-use std::ops::{AddAssign, Mul, MulAssign};
+use std::ops::{Mul, MulAssign};
 
 use speclab::Xyz;
 
@@ -42,30 +45,33 @@ pub enum Material {
     Texture,
 }
 
-/// A hit: distance, point, normal (facing the ray), material, and the
-/// texel for a textured surface.
+/// A hit: distance, point, normal (facing the ray), material, the texel
+/// for a textured surface, and the light square hit, if any.
 struct Hit {
     t: f64,
     point: V3,
     normal: V3,
     material: Material,
     texel: usize,
-    light: bool,
+    light: Option<usize>,
 }
 
-/// The closed box [0, 1]³ with the camera inside, two spheres, and the
-/// light: a square of side 0.3 in the ceiling's middle.
+/// The closed box [0, 1]³ with the camera inside, two spheres, and one or
+/// two lights: squares in the ceiling.
 pub struct Scene {
     /// `(center, radius, material)`.
     pub spheres: [(V3, f64, Material); 2],
     /// Per wall (floor, ceiling, back, left, right, front): its material.
     pub walls: [Material; 6],
+    /// The lights' middles (x, z) in the ceiling.
+    pub lights: Vec<[f64; 2]>,
 }
 
-/// Half the light's side, m.
-const LIGHT_HALF: f64 = 0.15;
-/// The light's middle (x, z) in the ceiling.
-const LIGHT_AT: [f64; 2] = [0.5, 0.7];
+/// Half a light's side, m: one square of side 0.3, or two of side 0.2
+/// (about the same area).
+fn light_half(lights: usize) -> f64 {
+    if lights > 1 { 0.1 } else { 0.15 }
+}
 
 impl Scene {
     fn hit(&self, origin: V3, dir: V3) -> Option<Hit> {
@@ -88,8 +94,12 @@ impl Scene {
             }
             let mut normal = [0.0; 3];
             normal[axis] = sign;
-            let light =
-                w == 1 && (p[0] - LIGHT_AT[0]).abs() < LIGHT_HALF && (p[2] - LIGHT_AT[1]).abs() < LIGHT_HALF;
+            let half = light_half(self.lights.len());
+            let light = if w == 1 {
+                self.lights.iter().position(|c| (p[0] - c[0]).abs() < half && (p[2] - c[1]).abs() < half)
+            } else {
+                None
+            };
             let texel = ((p[0] * 8.0) as usize).min(7) * 8 + ((p[1] * 8.0) as usize).min(7);
             best = Some(Hit { t, point: p, normal, material: self.walls[w], texel, light });
         }
@@ -106,7 +116,7 @@ impl Scene {
             }
             let p = add(origin, scale(dir, t));
             let normal = scale(sub(p, center), 1.0 / radius);
-            best = Some(Hit { t, point: p, normal, material, texel: 0, light: false });
+            best = Some(Hit { t, point: p, normal, material, texel: 0, light: None });
         }
         best
     }
@@ -119,27 +129,42 @@ impl Scene {
     }
 }
 
-/// How light and surfaces are painted: spectral or grey.
+/// How light and surfaces are painted: hero, fitted, RGB or grey.
 pub trait Paint: Sync {
     /// Per-path state: the wavelengths, or nothing.
     type Path: Copy;
     /// A radiance or throughput value.
-    type Value: Copy + Mul<Output = Self::Value> + MulAssign + AddAssign;
+    type Value: Copy + Mul<Output = Self::Value> + MulAssign;
     /// A new path's state from its uniform number.
     fn path(&self, u: f64) -> Self::Path;
-    /// One, and zero.
+    /// One.
     fn one(&self) -> Self::Value;
-    fn zero(&self) -> Self::Value;
     /// `v` times a geometric factor.
     fn scale(&self, v: Self::Value, s: f64) -> Self::Value;
-    /// The light's emission.
-    fn emission(&self, path: &Self::Path) -> Self::Value;
+    /// The XYZ that throughput `beta` carries from light `light` (an
+    /// estimate): each light converted with its own weights if the paint
+    /// has them.
+    fn emitted(&self, path: &Self::Path, light: usize, beta: Self::Value) -> Xyz;
     /// A material's albedo (at a texel, for the texture).
     fn albedo(&self, path: &Self::Path, material: Material, texel: usize) -> Self::Value;
     /// The chance that a path of throughput `beta` goes on.
     fn survival(&self, path: &Self::Path, beta: Self::Value) -> f64;
-    /// The path's radiance as XYZ (an estimate).
-    fn xyz(&self, path: &Self::Path, radiance: Self::Value) -> Xyz;
+}
+
+/// What a path met, for its exact colour: the surfaces in order, and each
+/// light seen after `depth` of them with the scalar factor (geometry and
+/// Russian roulette) its contribution carries.
+pub trait Record {
+    fn surface(&mut self, material: Material, texel: usize);
+    fn light(&mut self, light: usize, depth: usize, factor: f64);
+}
+
+/// Recording nothing: the timed runs.
+impl Record for () {
+    #[inline(always)]
+    fn surface(&mut self, _: Material, _: usize) {}
+    #[inline(always)]
+    fn light(&mut self, _: usize, _: usize, _: f64) {}
 }
 
 /// A small, fast generator for the geometry (xorshift64*).
@@ -166,43 +191,49 @@ fn cosine(n: V3, rng: &mut Rng) -> V3 {
 }
 
 /// One camera path through `(x, y)` in [0, 1]² of the image: its XYZ and
-/// the number of surfaces it met.
+/// the number of surfaces it met; what it met goes to `record`.
 pub fn trace<P: Paint>(
     scene: &Scene,
     paint: &P,
     path: &P::Path,
     (x, y): (f64, f64),
     rng: &mut Rng,
+    record: &mut impl Record,
 ) -> (Xyz, u32) {
     let (origin, mut dir) = ([0.5, 0.5, 0.02], normalize([x - 0.5, 0.5 - y, 0.72]));
     let mut origin = origin;
-    let (mut beta, mut radiance, mut vertices) = (paint.one(), paint.zero(), 0);
-    let emission = paint.emission(path);
+    let (mut beta, mut radiance, mut vertices) = (paint.one(), Xyz::ZERO, 0);
+    // The scalar part of beta (Russian roulette's 1/q), for the record.
+    let mut factor = 1.0;
+    let (count, half) = (scene.lights.len(), light_half(scene.lights.len()));
     for depth in 0..16 {
         let Some(hit) = scene.hit(origin, dir) else { break };
         vertices += 1;
-        if hit.light {
+        if let Some(light) = hit.light {
             if depth == 0 {
-                radiance += beta * emission;
+                radiance += paint.emitted(path, light, beta);
+                record.light(light, 0, 1.0);
             }
             break;
         }
         let albedo = paint.albedo(path, hit.material, hit.texel);
+        record.surface(hit.material, hit.texel);
         let n = if dot(hit.normal, dir) > 0.0 { scale(hit.normal, -1.0) } else { hit.normal };
-        // Next-event estimation: a point on the light, if it sees this one.
-        let on_light = [
-            LIGHT_AT[0] + LIGHT_HALF * (2.0 * rng.next() - 1.0),
-            1.0,
-            LIGHT_AT[1] + LIGHT_HALF * (2.0 * rng.next() - 1.0),
-        ];
+        // Next-event estimation: a light chosen uniformly (one number only
+        // when there are several), a point on it.
+        let light = if count > 1 { ((rng.next() * count as f64) as usize).min(count - 1) } else { 0 };
+        let at = scene.lights[light];
+        let on_light =
+            [at[0] + half * (2.0 * rng.next() - 1.0), 1.0, at[1] + half * (2.0 * rng.next() - 1.0)];
         let to_light = sub(on_light, hit.point);
         let d2 = dot(to_light, to_light);
         let w = scale(to_light, 1.0 / d2.sqrt());
         let (cos_surface, cos_light) = (dot(n, w), w[1]);
         if cos_surface > 0.0 && cos_light > 0.0 && scene.visible(add(hit.point, scale(n, 1e-6)), on_light) {
-            let area = 4.0 * LIGHT_HALF * LIGHT_HALF;
-            let geometry = cos_surface * cos_light * area / (std::f64::consts::PI * d2);
-            radiance += paint.scale(beta * albedo * emission, geometry);
+            let area = 4.0 * half * half;
+            let geometry = count as f64 * cos_surface * cos_light * area / (std::f64::consts::PI * d2);
+            radiance += paint.emitted(path, light, beta * albedo) * geometry;
+            record.light(light, depth + 1, factor * geometry);
         }
         beta *= albedo;
         if depth >= 2 {
@@ -211,9 +242,10 @@ pub fn trace<P: Paint>(
                 break;
             }
             beta = paint.scale(beta, 1.0 / q);
+            factor /= q;
         }
         origin = add(hit.point, scale(n, 1e-6));
         dir = cosine(n, rng);
     }
-    (paint.xyz(path, radiance), vertices)
+    (radiance, vertices)
 }

@@ -84,36 +84,59 @@ fn moments() -> &'static Moments {
     })
 }
 
-/// The normal equations for a set of lights: per channel the Gram matrix
-/// of all candidates, the right-hand side and the targets' weighted square.
+/// The normal equations for a set of lights, as sets of rows that share
+/// the nodes: per set the Gram matrix of all candidates, the right-hand
+/// side and the targets' weighted square. Sets `3g`, `3g + 1`, `3g + 2`
+/// are X, Y and Z of group `g`; a group is all the lights together (one
+/// weight set serving every light) or one light (weights of its own).
 pub(crate) struct Problem {
-    pub(super) gram: [Vec<f64>; 3],
-    pub(super) rhs: [Vec<f64>; 3],
-    pub(super) square: [f64; 3],
+    pub(super) sets: Vec<Rows>,
+}
+
+/// One set of rows: one channel of one group.
+pub(super) struct Rows {
+    pub(super) gram: Vec<f64>,
+    pub(super) rhs: Vec<f64>,
+    pub(super) square: f64,
+}
+
+impl Rows {
+    fn new() -> Self {
+        Rows { gram: vec![0.0; CANDIDATES * CANDIDATES], rhs: vec![0.0; CANDIDATES], square: 0.0 }
+    }
 }
 
 impl Problem {
-    /// The problem for `lights`; an [`Error::NoMass`] if there are none
-    /// or one has no power the observer sees (a white that is zero, or not
+    /// One group, all of `lights` together: the rule that serves them all
+    /// with one set of weights. An [`Error::NoMass`] if there are none or
+    /// one has no power the observer sees (a white that is zero, or not
     /// finite, in every channel).
     pub(crate) fn new(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
+        Self::grouped(lights, false)
+    }
+
+    /// One group per light: shared nodes, each light its own weights.
+    pub(crate) fn each(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
+        Self::grouped(lights, true)
+    }
+
+    fn grouped(lights: &[&dyn Spectrum], each: bool) -> Result<Self, Error> {
         if lights.is_empty() {
             return Err(Error::NoMass);
         }
         let m = moments();
-        let mut problem = Problem {
-            gram: [(); 3].map(|()| vec![0.0; CANDIDATES * CANDIDATES]),
-            rhs: [(); 3].map(|()| vec![0.0; CANDIDATES]),
-            square: [0.0; 3],
-        };
-        for &light in lights {
-            problem.add(m, light)?;
+        let groups = if each { lights.len() } else { 1 };
+        let mut problem = Problem { sets: (0..3 * groups).map(|_| Rows::new()).collect() };
+        for (i, &light) in lights.iter().enumerate() {
+            let group = if each { i } else { 0 };
+            problem.add(m, light, group)?;
         }
         Ok(problem)
     }
 
-    /// Adds one light's rows: the prior's paths and the two anchors.
-    fn add(&mut self, m: &Moments, light: &dyn Spectrum) -> Result<(), Error> {
+    /// Adds one light's rows to `group`: the prior's paths and the two
+    /// anchors.
+    fn add(&mut self, m: &Moments, light: &dyn Spectrum, group: usize) -> Result<(), Error> {
         // Everything in units of the light's brightest white channel, so
         // that any scale of light (subnormal to 1e100) gives the same
         // numbers; a channel far below the others is weighted as if at a
@@ -129,7 +152,7 @@ impl Problem {
         let mean: [f64; CANDIDATES] = std::array::from_fn(|j| PriorMean.eval(candidate(j)));
         for c in 0..3 {
             let channel = 1.0 / white[c].max(1e-3).powi(2);
-            let (gram, rhs) = (&mut self.gram[c], &mut self.rhs[c]);
+            let Rows { gram, rhs, square } = &mut self.sets[3 * group + c];
             for j in 0..CANDIDATES {
                 for k in 0..CANDIDATES {
                     gram[j * CANDIDATES + k] += channel * l[j] * l[k] * m.gram[c][j * CANDIDATES + k];
@@ -140,7 +163,7 @@ impl Problem {
                 for (b, (&lj, &vj)) in rhs.iter_mut().zip(l.iter().zip(v)) {
                     *b += a * lj * vj;
                 }
-                self.square[c] += channel * w[c] * t[c] * t[c];
+                *square += channel * w[c] * t[c] * t[c];
             }
             // Anchors: the white (r = 1) and the prior's mean.
             let kappa = ANCHOR * m.mean_omega2[c] * channel;
@@ -152,7 +175,7 @@ impl Problem {
                         gram[j * CANDIDATES + k] += kappa * aj * l[k] * row[k];
                     }
                 }
-                self.square[c] += kappa * target * target;
+                *square += kappa * target * target;
             }
         }
         Ok(())

@@ -2,8 +2,9 @@
 //! refinement, on the normal equations of `fit.rs`.
 //!
 //! - **Greedy**: each step adds the candidate that lowers the weighted
-//!   residual (summed over X, Y, Z) most. For every candidate at once, the
-//!   reduction is `(bⱼ − zⱼ·y)² / (Gⱼⱼ − |zⱼ|²)` per channel, with `zⱼ =
+//!   residual (summed over X, Y, Z, and over the lights when each light
+//!   has weights of its own) most. For every candidate at once, the
+//!   reduction is `(bⱼ − zⱼ·y)² / (Gⱼⱼ − |zⱼ|²)` per set of rows, with `zⱼ =
 //!   L⁻¹·G[S, j]` and `y = L⁻¹·b[S]` for the Cholesky factor `L` of the
 //!   chosen set's Gram matrix; adding a node extends `L` and every `zⱼ` by
 //!   one entry.
@@ -26,49 +27,64 @@ struct Factor {
 }
 
 impl Problem {
-    /// `G[j][k]` of channel `c`.
+    /// `G[j][k]` of set `c`.
     fn g(&self, c: usize, j: usize, k: usize) -> f64 {
-        self.gram[c][j * CANDIDATES + k]
+        self.sets[c].gram[j * CANDIDATES + k]
     }
 
-    /// A tiny ridge on channel `c`'s diagonal, against rounding.
+    /// `b[j]` of set `c`.
+    fn b(&self, c: usize, j: usize) -> f64 {
+        self.sets[c].rhs[j]
+    }
+
+    /// The sets of rows: 3 per group.
+    fn count(&self) -> usize {
+        self.sets.len()
+    }
+
+    /// A tiny ridge on set `c`'s diagonal, against rounding.
     fn ridge(&self, c: usize) -> f64 {
         1e-13 * (0..CANDIDATES).map(|j| self.g(c, j, j)).fold(0.0, f64::max)
     }
 
-    /// The M nodes (candidate indices, increasing) and per channel their
-    /// weights, by greedy choice and local refinement.
-    pub(crate) fn fit(&self, m: usize) -> (Vec<usize>, [Vec<f64>; 3]) {
+    /// The M nodes (candidate indices, increasing) and per group the
+    /// weights of each channel, by greedy choice and local refinement.
+    pub(crate) fn fit(&self, m: usize) -> (Vec<usize>, Vec<[Vec<f64>; 3]>) {
         let mut nodes = self.greedy(m.min(CANDIDATES));
         self.refine(&mut nodes);
         nodes.sort_unstable();
-        let weights = [0, 1, 2].map(|c| self.weights(c, &nodes));
+        let weights =
+            (0..self.count() / 3).map(|g| [0, 1, 2].map(|c| self.weights(3 * g + c, &nodes))).collect();
         (nodes, weights)
     }
 
     /// Greedy forward selection of `m` nodes.
     fn greedy(&self, m: usize) -> Vec<usize> {
-        let mut z =
-            [(); 3].map(|()| (0..CANDIDATES).map(|_| Vec::with_capacity(m)).collect::<Vec<Vec<f64>>>());
-        let mut d: [Vec<f64>; 3] = [0, 1, 2].map(|c| (0..CANDIDATES).map(|j| self.g(c, j, j)).collect());
-        let mut y = [(); 3].map(|()| Vec::with_capacity(m));
-        let ridge = [0, 1, 2].map(|c| self.ridge(c));
+        let sets = 0..self.count();
+        let mut z: Vec<Vec<Vec<f64>>> =
+            sets.clone().map(|_| (0..CANDIDATES).map(|_| Vec::with_capacity(m)).collect()).collect();
+        let mut d: Vec<Vec<f64>> =
+            sets.clone().map(|c| (0..CANDIDATES).map(|j| self.g(c, j, j)).collect()).collect();
+        let mut y: Vec<Vec<f64>> = sets.clone().map(|_| Vec::with_capacity(m)).collect();
+        let ridge: Vec<f64> = sets.clone().map(|c| self.ridge(c)).collect();
         let mut nodes = Vec::with_capacity(m);
         for _ in 0..m {
             let score = |j: usize| -> f64 {
-                (0..3)
+                sets.clone()
                     .map(|c| {
-                        let num = self.rhs[c][j] - dot(&z[c][j], &y[c]);
+                        let num = self.b(c, j) - dot(&z[c][j], &y[c]);
                         num * num / (d[c][j] + ridge[c])
                     })
                     .sum()
             };
-            let open = (0..CANDIDATES).filter(|&j| !nodes.contains(&j) && (0..3).all(|c| d[c][j] > ridge[c]));
+            let open =
+                (0..CANDIDATES).filter(|&j| !nodes.contains(&j) && sets.clone().all(|c| d[c][j] > ridge[c]));
             let Some(s) = best(open.map(|j| (j, -score(j)))) else { break };
-            for c in 0..3 {
+            for c in sets.clone() {
                 let root = d[c][s].sqrt();
                 let zs = z[c][s].clone();
-                y[c].push((self.rhs[c][s] - dot(&zs, &y[c])) / root);
+                let ys = (self.b(c, s) - dot(&zs, &y[c])) / root;
+                y[c].push(ys);
                 for j in 0..CANDIDATES {
                     let e = (self.g(c, s, j) - dot(&zs, &z[c][j])) / root;
                     z[c][j].push(e);
@@ -88,13 +104,14 @@ impl Problem {
             for i in 0..nodes.len() {
                 let others: Vec<usize> =
                     nodes.iter().enumerate().filter(|&(k, _)| k != i).map(|(_, &j)| j).collect();
-                let factors = [0, 1, 2].map(|c| self.factor(c, &others));
-                let base: f64 = (0..3).map(|c| self.square[c] - dot(&factors[c].y, &factors[c].y)).sum();
+                let factors: Vec<Factor> = (0..self.count()).map(|c| self.factor(c, &others)).collect();
+                let base: f64 = factors.iter().zip(&self.sets).map(|(f, r)| r.square - dot(&f.y, &f.y)).sum();
                 let here = nodes[i];
                 let (lo, hi) = (here.saturating_sub(WINDOW), (here + WINDOW).min(CANDIDATES - 1));
                 let open = (lo..=hi).filter(|j| !others.contains(j));
                 let scored = open.filter_map(|j| {
-                    let gain: Option<f64> = (0..3).map(|c| self.gain(c, &factors[c], &others, j)).sum();
+                    let gain: Option<f64> =
+                        factors.iter().enumerate().map(|(c, f)| self.gain(c, f, &others, j)).sum();
                     gain.map(|g| (j, base - g))
                 });
                 if let Some(j) = best(scored).filter(|&j| j != here) {
@@ -117,26 +134,26 @@ impl Problem {
     }
 
     /// The residual lowered by adding candidate `j` to `nodes` (factored
-    /// in `f`) for channel `c`; `None` if `j` adds nothing independent.
+    /// in `f`) for set `c`; `None` if `j` adds nothing independent.
     fn gain(&self, c: usize, f: &Factor, nodes: &[usize], j: usize) -> Option<f64> {
         let z = f.forward(&nodes.iter().map(|&k| self.g(c, k, j)).collect::<Vec<_>>());
         let d = self.g(c, j, j) - dot(&z, &z);
-        let num = self.rhs[c][j] - dot(&z, &f.y);
+        let num = self.b(c, j) - dot(&z, &f.y);
         (d > self.ridge(c)).then(|| num * num / d)
     }
 
     /// The weighted residual of the best weights on `nodes`, summed over
-    /// the channels.
+    /// the sets.
     fn residual(&self, nodes: &[usize]) -> f64 {
-        (0..3)
+        (0..self.count())
             .map(|c| {
                 let f = self.factor(c, nodes);
-                self.square[c] - dot(&f.y, &f.y)
+                self.sets[c].square - dot(&f.y, &f.y)
             })
             .sum()
     }
 
-    /// Channel `c`'s Cholesky factor on `nodes`, and `y`.
+    /// Set `c`'s Cholesky factor on `nodes`, and `y`.
     fn factor(&self, c: usize, nodes: &[usize]) -> Factor {
         let n = nodes.len();
         let ridge = self.ridge(c);
@@ -149,11 +166,11 @@ impl Problem {
             }
         }
         let mut f = Factor { n, l, y: Vec::new() };
-        f.y = f.forward(&nodes.iter().map(|&j| self.rhs[c][j]).collect::<Vec<_>>());
+        f.y = f.forward(&nodes.iter().map(|&j| self.b(c, j)).collect::<Vec<_>>());
         f
     }
 
-    /// Channel `c`'s least-squares weights on `nodes`.
+    /// Set `c`'s least-squares weights on `nodes`.
     fn weights(&self, c: usize, nodes: &[usize]) -> Vec<f64> {
         let f = self.factor(c, nodes);
         let (n, l) = (f.n, &f.l);

@@ -15,6 +15,9 @@
 //! reflectance 1 has exactly the white's XYZ, and every sampler (which
 //! draws within 380–730 nm) is unbiased for both.
 //!
+//! For a renderer's paths, [`ExactPaths`] gives each path's exact colour
+//! as a sum over fixed nodes.
+//!
 //! **Speed**: for a tabulated light and surface (or any light with a
 //! cache and reflectance with samples), the light keeps exact
 //! weights for the surface's grid, computed on first use (about 20 µs),
@@ -31,6 +34,8 @@
 //! assert!((twice.y - 2.0 * once.y).abs() < 1e-12 * twice.y);
 //! # Ok::<(), speclab::Error>(())
 //! ```
+
+pub use crate::sampling::paths::ExactPaths;
 
 use crate::color::Xyz;
 use crate::sampling::PreparedLight;
@@ -58,8 +63,8 @@ pub fn xyz(light: &impl Spectrum, surface: &impl Spectrum) -> Xyz {
 
 /// XYZ of the perfect white (reflectance 1 over 380–730 nm) under `light`.
 #[must_use]
-pub fn white(light: &impl Spectrum) -> Xyz {
-    Xyz::from(integrate::white(light))
+pub fn white(light: &(impl Spectrum + ?Sized)) -> Xyz {
+    Xyz::from(integrate::white(&light))
 }
 
 /// XYZ of the product of `factors` over 380–730 nm, integrated piece by

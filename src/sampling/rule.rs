@@ -174,19 +174,36 @@ impl Rule {
 
     /// The rule as a `Copy` value of compile-time size M in precision `T`,
     /// for a renderer's inner loop: spectra sample at it, and its
-    /// `to_xyz` applies the weights. An [`Error::Count`] unless `M` is the
-    /// rule's M; an [`Error::BoxRule`] for box buckets, whose values are
-    /// means over the buckets, not values at wavelengths (use
-    /// `RegularSpectrum<M, BoxAverage>`).
+    /// `to_xyz` applies the weights. `M` may exceed the rule's size (a
+    /// renderer that chooses the rule's size at run time compiles a few
+    /// sizes): the lanes beyond it repeat the last wavelength and weigh
+    /// nothing, so they change no colour. An [`Error::Count`] for `M` below
+    /// the rule's size or above [`MAX_M`]; an [`Error::BoxRule`] for box
+    /// buckets, whose values are means over the buckets, not values at
+    /// wavelengths (use `RegularSpectrum<M, BoxAverage>`).
+    ///
+    /// ```
+    /// use speclab::data::{lights, patches};
+    /// use speclab::sampling::rule::Rule;
+    /// let rule = Rule::fit(&[&lights::F11], 10)?;
+    /// let (exact, padded) = (rule.wavelengths::<10, f64>()?, rule.wavelengths::<16, f64>()?);
+    /// let y10 = exact.y(exact.sample(&lights::F11) * exact.sample(&patches::G4));
+    /// let y16 = padded.y(padded.sample(&lights::F11) * padded.sample(&patches::G4));
+    /// assert!((y10 - y16).abs() <= 1e-12 * y10);
+    /// assert!(rule.wavelengths::<8, f64>().is_err());
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
     pub fn wavelengths<const M: usize, T: Float>(&self) -> Result<SampledWavelengths<M, T>, Error> {
-        if M != self.m() {
-            return Err(Error::Count { what: "the rule's size", found: M, min: self.m(), max: self.m() });
+        let m = self.m();
+        if !(m..=MAX_M).contains(&M) {
+            return Err(Error::Count { what: "lanes for the rule", found: M, min: m, max: MAX_M });
         }
         if self.kind == RuleKind::Buckets(BucketRule::BoxAverage) {
             return Err(Error::BoxRule);
         }
-        let lambda = std::array::from_fn(|i| T::from_f64(self.lambda[i]));
-        let row = |c: usize| std::array::from_fn(|i| T::from_f64(self.scale * self.weights[c][i]));
+        let lambda = std::array::from_fn(|i| T::from_f64(self.lambda[i.min(m - 1)]));
+        let weight = |c: usize, i: usize| if i < m { self.scale * self.weights[c][i] } else { 0.0 };
+        let row = |c: usize| std::array::from_fn(|i| T::from_f64(weight(c, i)));
         Ok(SampledWavelengths::from_parts(lambda, [row(0), row(1), row(2), [T::ZERO; M]]))
     }
 }

@@ -125,6 +125,27 @@ impl<const K: usize, T: Float> SampledWavelengths<K, T> {
         SampledSpectrum::new(self.weights[1])
     }
 
+    /// A light's emission folded into the XYZ weights: the colour any
+    /// throughput `β` (at these wavelengths) carries from `light` is then
+    /// `emission.xyz(β)`, three dot products, the light evaluated once. A
+    /// renderer with several lights keeps one per light, each from that
+    /// light's own weights ([`Rule::fit_each`](super::rule::Rule::fit_each)).
+    ///
+    /// ```
+    /// use speclab::{data::{lights, patches}, HeroSample};
+    /// let h = HeroSample::<4>::new(0.3);
+    /// let beta = patches::G4.sample(&h);
+    /// let folded = h.emission(&lights::F11).xyz(beta);
+    /// let direct = h.to_xyz(beta * lights::F11.sample(&h));
+    /// assert!((folded.y - direct.y).abs() <= 1e-12 * direct.y);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn emission(&self, light: &impl Spectrum) -> Emission<K, T> {
+        let le = light.sample(self).values;
+        Emission { weights: std::array::from_fn(|c| std::array::from_fn(|j| self.weights[c][j] * le[j])) }
+    }
+
     /// The same wavelengths and weights in precision `U` (a rule fitted in
     /// `f64`, for a renderer in `f32`).
     #[must_use]
@@ -145,6 +166,24 @@ impl<const K: usize, T: Float> Wavelengths<K, T> for SampledWavelengths<K, T> {
     #[inline(always)]
     fn nearest_nm(&self) -> [u16; K] {
         self.nearest
+    }
+}
+
+/// A light's emission times the XYZ weights of some wavelengths (see
+/// [`SampledWavelengths::emission`]): rows `w꜀ⱼ·L(λⱼ)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Emission<const K: usize, T: Float = f64> {
+    weights: [[T; K]; 3],
+}
+
+impl<const K: usize, T: Float> Emission<K, T> {
+    /// The XYZ that throughput `beta` carries from the light:
+    /// `Σⱼ w꜀ⱼ·L(λⱼ)·βⱼ`, summed in `T`, returned in `f64`.
+    #[inline(always)]
+    #[must_use]
+    pub fn xyz(&self, beta: SampledSpectrum<K, T>) -> Xyz {
+        let [x, y, z] = &self.weights;
+        Xyz::new(dot(x, &beta.values).to_f64(), dot(y, &beta.values).to_f64(), dot(z, &beta.values).to_f64())
     }
 }
 

@@ -231,7 +231,7 @@ fn draw_legend(area: &Area, order: &[Method]) -> Result<(), Failure> {
 }
 
 /// A tick label: 1, 10, 100, 1k, 10k, 1M; 0.1, 0.01.
-fn short(v: f64) -> String {
+pub(crate) fn short(v: f64) -> String {
     match v {
         v if v >= 1e6 => format!("{}M", v / 1e6),
         v if v >= 1e3 => format!("{}k", v / 1e3),
