@@ -16,9 +16,9 @@ use common::{fail, finish};
 use speclab::Role;
 use speclab::color::{Display, Exposure, GamutMap};
 use speclab::study::StudyError;
-use speclab::study::compare::{self, CompareOptions};
-use speclab::study::report;
-use speclab::study::scene::{Choice, Named};
+use speclab::study::evaluate::scene::{Choice, Named};
+use speclab::study::experiments::compare::{self, CompareOptions};
+use speclab::study::present::report;
 
 const USAGE: &str = "\
 usage: compare [options]

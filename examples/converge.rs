@@ -19,8 +19,8 @@ use speclab::Role;
 use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::strata::Strata;
 use speclab::study::StudyError;
-use speclab::study::scene::{self, Choice, Depth};
-use speclab::study::{convergence, report};
+use speclab::study::evaluate::scene::{self, Choice, Depth};
+use speclab::study::{experiments::convergence, present::report};
 
 const USAGE: &str = "\
 usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--depth D] [--all] [--csv] [--summary]

@@ -19,8 +19,8 @@ use std::process::ExitCode;
 
 use common::{fail, finish};
 use speclab::Role;
-use speclab::study::scene::{self, Choice, Depth, Named};
-use speclab::study::{StudyError, report, rules, shapes};
+use speclab::study::evaluate::scene::{self, Choice, Depth, Named};
+use speclab::study::{StudyError, evaluate::shapes, experiments::rules, present::report};
 
 const USAGE: &str = "\
 usage: fitted [--light NAME|all] [--section by-m|shapes|depth|lights|all] [--budget B] [--trials T] [--seed S]

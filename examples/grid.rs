@@ -18,11 +18,11 @@ use common::{fail, finish};
 use speclab::Role;
 use speclab::color::GamutMap;
 use speclab::study::StudyError;
-use speclab::study::grid::GridOptions;
-use speclab::study::remarks::Viewing;
-use speclab::study::report;
-use speclab::study::scene::{Choice, Named};
-use speclab::study::texture::{self, TextureOptions};
+use speclab::study::evaluate::scene::{Choice, Named};
+use speclab::study::evaluate::viewing::Viewing;
+use speclab::study::experiments::grid::GridOptions;
+use speclab::study::experiments::texture::{self, TextureOptions};
+use speclab::study::present::report;
 
 const USAGE: &str = "\
 usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture]

@@ -16,9 +16,9 @@ use std::process::ExitCode;
 use common::{fail, finish};
 use speclab::Role;
 use speclab::study::StudyError;
-use speclab::study::plan::{self, Request};
-use speclab::study::report;
-use speclab::study::scene::{self, Choice, Named};
+use speclab::study::evaluate::scene::{self, Choice, Named};
+use speclab::study::planning::plan::{self, Request};
+use speclab::study::present::report;
 
 const USAGE: &str = "\
 usage: plan --light NAME|all ... --surface NAME|all ... [--budget B] [--unbiased] [--depth D]

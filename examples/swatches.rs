@@ -23,8 +23,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use common::fail;
-use speclab::study::swatches::{self, SwatchOptions};
-use speclab::study::{scene, sheet};
+use speclab::study::present::swatches::{self, SwatchOptions};
+use speclab::study::{evaluate::scene, present::sheet};
 
 const USAGE: &str = "\
 usage: swatches [--n N] [--m M] [--seed S] [--white-balance] [--gamut clip|chroma] [--out PATH]
@@ -74,7 +74,9 @@ fn main() -> ExitCode {
         Ok(swatches) => swatches,
         Err(e) => return fail("swatches", e),
     };
-    let image = sheet::draw(&swatches);
+    let layout = sheet::Layout::new(&swatches);
+    let image =
+        png_file::Image { width: layout.width(), height: layout.height(), rgb: sheet::draw(&swatches) };
     match png_file::write_file(&args.out, &image) {
         Ok(()) => {
             eprintln!("swatches: wrote {} ({} × {} pixels)", args.out.display(), image.width, image.height);

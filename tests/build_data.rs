@@ -51,7 +51,7 @@ fn wavelength_out_of_order() {
     );
 }
 
-/// Before, `build.rs` skipped validation: this value built, clamped to 1.
+/// A reflectance above 1 is refused at build time (not clamped to 1).
 #[test]
 fn reflectance_above_one() {
     assert_eq!(

@@ -8,12 +8,12 @@
 
 use std::num::NonZeroUsize;
 
-use speclab::study::chart::{self, Point};
-use speclab::study::cost::{Config, Cost};
-use speclab::study::method::Method;
-use speclab::study::report;
-use speclab::study::scene::{Depth, builtin_lights, builtin_surfaces};
-use speclab::study::trials;
+use speclab::study::evaluate::method::Method;
+use speclab::study::evaluate::scene::{Depth, builtin_lights, builtin_surfaces};
+use speclab::study::evaluate::trials;
+use speclab::study::planning::chart::{self, Point};
+use speclab::study::planning::cost::{Config, Cost};
+use speclab::study::present::report;
 
 /// A made-up cost model: ns grow with the wavelengths looked at.
 fn model(config: Config) -> Result<Cost, speclab::study::StudyError> {

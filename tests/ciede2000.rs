@@ -3,7 +3,7 @@
 #![cfg(feature = "study")]
 
 use speclab::sampling::reference;
-use speclab::study::perceptual::{ciede2000, lab};
+use speclab::study::evaluate::perceptual::{ciede2000, lab};
 use speclab::{Xyz, data};
 
 /// The pairs are published to four decimals: half a unit in the last place.

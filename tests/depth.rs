@@ -12,9 +12,9 @@ use speclab::data::{Light, Patch, lights, patches};
 use speclab::sampling::buckets::BucketRule;
 use speclab::sampling::rule::Rule;
 use speclab::spectrum::observer::xyz_bar;
-use speclab::study::method::Method;
-use speclab::study::scene::{Depth, MAX_DEPTH};
-use speclab::study::{StudyError, trials};
+use speclab::study::evaluate::method::Method;
+use speclab::study::evaluate::scene::{Depth, MAX_DEPTH};
+use speclab::study::{StudyError, evaluate::trials};
 
 /// `∫ L·Rᵈ·c̄` by 10-point Gauss–Legendre on every 0.05 nm: no knowledge of
 /// the pieces, so kinks (clamps) cost it a little, far below 1e-9.

@@ -70,9 +70,9 @@ proptest! {
 /// trials, exact variances, white balance.
 #[cfg(feature = "study")]
 fn study(l: &TabulatedSpectrum, s: &TabulatedSpectrum, seed: u64) -> Result<(), TestCaseError> {
-    use speclab::study::method::Method;
-    use speclab::study::remarks::{Normalization, Viewing};
-    use speclab::study::{perceptual, trials, variance};
+    use speclab::study::evaluate::method::Method;
+    use speclab::study::evaluate::viewing::{Normalization, Viewing};
+    use speclab::study::{evaluate::perceptual, evaluate::trials, evaluate::variance};
     let (exact, white) = (reference::xyz(l, s), reference::white(l));
     for mode in Normalization::ALL {
         prop_assert!(!mode.factor(l).is_nan(), "{mode:?}");
@@ -111,7 +111,7 @@ fn study(l: &TabulatedSpectrum, s: &TabulatedSpectrum, seed: u64) -> Result<(), 
 fn nearly_zero_white_component() {
     use speclab::sampling::buckets::BucketRule;
     use speclab::sampling::rule::Rule;
-    use speclab::study::perceptual;
+    use speclab::study::evaluate::perceptual;
     let l = spectrum(vec![0.0, 0.0, 0.0, 5.562_684_646_268_003e-309, 1e100], Role::Light).expect("valid");
     let s = spectrum(vec![0.0, 0.0, 0.0, 0.516_878_024_304_750_5], Role::Reflectance).expect("valid");
     let (exact, white) = (reference::xyz(&l, &s), reference::white(&l));

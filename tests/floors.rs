@@ -167,7 +167,7 @@ fn no_file_uses_a_floor_above_its_own() {
 fn the_reader_sees_every_path() {
     let text = code(
         "use crate::{color::Xyz, sampling::{hero, pdf}};\n\
-         let x = crate::study::method::Method::HERO; // crate::io here is a comment\n\
+         let x = crate::study::evaluate::method::Method::HERO; // crate::io here is a comment\n\
          $crate::error::Error; not_crate::spectrum;",
     );
     assert_eq!(first_segments(&text, "crate::"), ["color", "sampling", "study"]);

@@ -25,16 +25,27 @@ where
     }
     let err = "nonsense".parse::<T>().unwrap_err().to_string();
     if names.len() <= 12 {
-        let listed = match names.split_last() {
-            Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
-            _ => names.concat(),
-        };
-        assert_eq!(err, format!("expected {what} ({listed}), found \"nonsense\""));
+        // Every name listed, in order (the exact wording: `strata_error`).
+        let listed = err
+            .strip_prefix(&format!("expected {what} ("))
+            .and_then(|e| e.strip_suffix("), found \"nonsense\""));
+        let listed = listed.unwrap_or_else(|| panic!("{err}"));
+        let mut at = 0;
+        for name in names {
+            at += listed[at..].find(name).unwrap_or_else(|| panic!("{name} in {err}")) + name.len();
+        }
     } else {
         let count = format!("; {} names in all), found \"nonsense\"", names.len());
         assert!(err.starts_with(&format!("expected {what} (nearest: ")) && err.ends_with(&count), "{err}");
     }
     assert!("".parse::<T>().is_err());
+}
+
+/// The message in full, for one list.
+#[test]
+fn strata_error() {
+    let err = "nonsense".parse::<Strata>().unwrap_err().to_string();
+    assert_eq!(err, "expected a strata (none, jitter or kronecker), found \"nonsense\"");
 }
 
 #[test]
@@ -52,8 +63,8 @@ fn core_choices() {
 #[test]
 fn study_choices() {
     use speclab::sampling::choice::PdfKind;
-    use speclab::study::method::Method;
-    use speclab::study::remarks::Normalization;
+    use speclab::study::evaluate::method::Method;
+    use speclab::study::evaluate::viewing::Normalization;
     round_trip(&PdfKind::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
     round_trip(&Normalization::ALL, &["none", "power", "luminance"], "a normalisation");
     let methods = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];

@@ -130,7 +130,7 @@ fn spread(values: &[f64], sigma: f64) -> (f64, f64) {
 #[test]
 fn spread_matches_exact_variance() {
     use speclab::data::Patch;
-    use speclab::study::variance;
+    use speclab::study::evaluate::variance;
     const TRIALS: usize = 4000;
     let mut rng = StdRng::seed_from_u64(17);
     let mut worst = 0.0f64;
@@ -186,7 +186,7 @@ fn spread_matches_exact_variance() {
 fn uniform_variance_is_the_closed_form() {
     use speclab::sampling::reference;
     use speclab::spectrum::observer::xyz_bar;
-    use speclab::study::variance;
+    use speclab::study::evaluate::variance;
     let (l, s) = (&speclab::data::lights::D65, &speclab::data::patches::F4);
     // ∫ f² by a fine midpoint sum (f² is smooth between 5 nm knots).
     let h = 0.001;

@@ -14,11 +14,11 @@ use std::num::NonZeroUsize;
 use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::strata::Strata;
 use speclab::study::StudyError;
-use speclab::study::cost::{Config, Cost};
-use speclab::study::method::Method;
-use speclab::study::plan::{self, Request, Verdict};
-use speclab::study::scene::{Named, builtin_lights, builtin_surfaces};
-use speclab::study::trials;
+use speclab::study::evaluate::method::Method;
+use speclab::study::evaluate::scene::{Named, builtin_lights, builtin_surfaces};
+use speclab::study::evaluate::trials;
+use speclab::study::planning::cost::{Config, Cost};
+use speclab::study::planning::plan::{self, Request, Verdict};
 
 fn request(seed: u64) -> Request {
     Request { seed, ..Request::default() }

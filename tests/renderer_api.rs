@@ -125,9 +125,9 @@ fn terminate_secondary_keeps_the_hero_alone() {
 
 /// A renderer's own wavelength distribution, p(λ) ∝ 1 + t over the range
 /// (t = (λ − 380)/W), drawn by inverting its CDF and rotated in primary
-/// sample space, is unbiased through `with_pdf`.
+/// sample space, is unbiased through `from_wavelengths`.
 #[test]
-fn own_distribution_through_with_pdf_is_unbiased() {
+fn own_distribution_through_from_wavelengths_is_unbiased() {
     let lambda_of = |u: f64| LAMBDA_MIN + LAMBDA_WIDTH * ((1.0 + 3.0 * u).sqrt() - 1.0);
     let pdf_of = |lambda: f64| (1.0 + (lambda - LAMBDA_MIN) / LAMBDA_WIDTH) / (1.5 * LAMBDA_WIDTH);
     unbiased("ramp pdf", |l, s, rng| {
@@ -139,7 +139,7 @@ fn own_distribution_through_with_pdf_is_unbiased() {
 }
 
 #[test]
-fn with_pdf_rejects_what_cannot_be_used() {
+fn from_wavelengths_rejects_what_cannot_be_used() {
     assert!(
         HeroSample::from_wavelengths([500.0, 600.0], [0.01, 0.0]).is_ok(),
         "pdf 0 marks a dropped wavelength"
@@ -251,8 +251,9 @@ fn pdf_round_trip() {
 #[test]
 fn exact_paths_are_brute_force_quadrature() {
     use speclab::LinearSrgb;
+    use speclab::color::RgbAlbedo;
     use speclab::sampling::reference::ExactPaths;
-    use speclab::spectrum::{RgbAlbedo, Spectrum};
+    use speclab::spectrum::Spectrum;
     let texel = RgbAlbedo::new(LinearSrgb::new(0.7, 0.3, 0.1)).expect("an albedo");
     let spectra: [&dyn Spectrum; 6] = [
         &data::lights::F11,

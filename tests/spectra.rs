@@ -9,9 +9,10 @@ use std::num::NonZeroUsize;
 
 use rand::SeedableRng;
 use rand::rngs::StdRng;
+use speclab::color::RgbAlbedo;
 use speclab::data::{lights, patches};
 use speclab::sampling::{hero, reference};
-use speclab::spectrum::{Blackbody, Constant, DenseSpectrum, FnSpectrum, RgbAlbedo};
+use speclab::spectrum::{Blackbody, Constant, DenseSpectrum, FnSpectrum};
 use speclab::{
     BoxAverage, Center, HeroSample, LinearSrgb, RegularSpectrum, Role, Spectrum, TabulatedSpectrum, Xyz,
 };

@@ -10,8 +10,8 @@ use speclab::data::{Light, Patch};
 use speclab::sampling::buckets::BucketRule as Rule;
 use speclab::sampling::reference;
 use speclab::sampling::rule::Rule as Buckets;
-use speclab::study::method::{Method, derive_seed};
-use speclab::study::{perceptual, trials, variance};
+use speclab::study::evaluate::method::{Method, derive_seed};
+use speclab::study::{evaluate::perceptual, evaluate::trials, evaluate::variance};
 
 fn nz(n: usize) -> NonZeroUsize {
     NonZeroUsize::new(n).expect("non-zero")

@@ -11,14 +11,15 @@ mod png_file;
 
 use std::num::NonZeroUsize;
 
+use png_file::Image;
 use speclab::LinearSrgb;
 use speclab::color::display::EncodedSrgb;
 use speclab::color::display::{Display, Exposure, GamutMap, Srgb8};
 use speclab::sampling::reference;
-use speclab::study::method::Method;
-use speclab::study::scene::{Named, builtin_lights, builtin_surfaces};
-use speclab::study::sheet::{self, Image, Layout};
-use speclab::study::swatches::{self, SwatchOptions};
+use speclab::study::evaluate::method::Method;
+use speclab::study::evaluate::scene::{Named, builtin_lights, builtin_surfaces};
+use speclab::study::present::sheet::{self, Layout};
+use speclab::study::present::swatches::{self, SwatchOptions};
 
 fn nz(n: usize) -> NonZeroUsize {
     NonZeroUsize::new(n).unwrap()
@@ -45,17 +46,19 @@ fn decode(bytes: &[u8]) -> Image {
 /// Every pixel of a swatch's square in `image`.
 fn square(image: &Image, layout: &Layout, (l, p, c): (usize, usize, usize), size: usize) -> Vec<Srgb8> {
     let (x0, y0) = layout.swatch_origin(l, p, c);
-    (0..size * size).map(|i| image.pixel(x0 + i % size, y0 + i / size).unwrap()).collect()
+    let at = |i: usize| image.pixel(x0 + i % size, y0 + i / size).unwrap();
+    (0..size * size).map(at).map(|[r, g, b]| Srgb8::new(r, g, b)).collect()
 }
 
 #[test]
 fn tiny_sheet_png_has_the_layout_size_and_the_exact_colours() {
     let (lights, patches, settings) = tiny();
     let swatches = swatches::render(&lights, &patches, &settings).unwrap();
-    let mut bytes = Vec::new();
-    png_file::write(&mut bytes, &sheet::draw(&swatches)).unwrap();
-    let image = decode(&bytes);
     let layout = Layout::new(&swatches);
+    let sheet = Image { width: layout.width(), height: layout.height(), rgb: sheet::draw(&swatches) };
+    let mut bytes = Vec::new();
+    png_file::write(&mut bytes, &sheet).unwrap();
+    let image = decode(&bytes);
     assert_eq!((image.width, image.height), (layout.width(), layout.height()));
     for (l, light) in lights.iter().enumerate() {
         let display = Display::new(Exposure::fit_white(reference::white(&light.spectrum)), GamutMap::Chroma);
@@ -120,8 +123,9 @@ fn bad_settings_are_errors_or_empty_not_panics() {
     assert!(swatches::render(&lights, &patches, &too_many).is_err());
     let empty = swatches::render(&lights, &patches, &SwatchOptions { size: 0, ..settings }).unwrap();
     assert!(empty.swatch(0, 0, 0).is_empty() && empty.swatch(9, 0, 0).is_empty());
-    let image = sheet::draw(&empty);
-    assert_eq!(image.rgb.len(), 3 * image.width * image.height);
+    let layout = Layout::new(&empty);
+    assert_eq!(sheet::draw(&empty).len(), 3 * layout.width() * layout.height());
     let none = swatches::render(&[], &patches, &settings).unwrap();
-    assert_eq!(sheet::draw(&none).height, Layout::new(&none).height());
+    let layout = Layout::new(&none);
+    assert_eq!(sheet::draw(&none).len(), 3 * layout.width() * layout.height());
 }

@@ -7,8 +7,8 @@
 
 use speclab::data::{Light, Patch};
 use speclab::sampling::reference;
-use speclab::study::grid::{GridOptions, GridRow};
-use speclab::study::scene::{builtin_lights, builtin_surfaces};
+use speclab::study::evaluate::scene::{builtin_lights, builtin_surfaces};
+use speclab::study::experiments::grid::{GridOptions, GridRow};
 use speclab::{TabulatedSpectrum, Xyz};
 use static_assertions::assert_impl_all;
 

@@ -12,7 +12,7 @@ use std::num::NonZeroUsize;
 
 use speclab::data::{Light, Patch};
 use speclab::sampling::reference;
-use speclab::study::method::{Method, derive_seed};
+use speclab::study::evaluate::method::{Method, derive_seed};
 
 const TRIALS: usize = 2000;
 const N: usize = 8;

@@ -1,15 +1,15 @@
 //! One range for everything: the perfect white used for CIELAB is
 //! integrated over 380–730 nm like every colour, even for lights and an
-//! observer tabulated to 780 nm. (Before, the white ran to 780 nm for D65 and
-//! F11, which moved ΔE00 by up to 0.03 and made a perfect white patch come
-//! out below L* = 100.)
+//! observer tabulated to 780 nm. (A white integrated to 780 nm for D65 and
+//! F11 would move ΔE00 by up to 0.03 and put a perfect white patch below
+//! L* = 100.)
 #![cfg(feature = "study")]
 
 use speclab::data::Light;
 use speclab::sampling::reference;
 use speclab::spectrum::observer;
-use speclab::study::perceptual;
-use speclab::study::remarks::Normalization;
+use speclab::study::evaluate::perceptual;
+use speclab::study::evaluate::viewing::Normalization;
 use speclab::{Role, TabulatedSpectrum, Xyz};
 
 /// Reflectance 1 over exactly 380–730 nm (the cubic through ones is 1).

@@ -5,7 +5,23 @@ use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
-use speclab::study::sheet::Image;
+/// An 8-bit sRGB image: `width × height` pixels, R, G, B each, rows top
+/// to bottom.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Image {
+    pub width: usize,
+    pub height: usize,
+    pub rgb: Vec<u8>,
+}
+
+impl Image {
+    /// The pixel at `(x, y)`, or `None` outside the image.
+    #[allow(dead_code)] // the tests read pixels back
+    pub fn pixel(&self, x: usize, y: usize) -> Option<[u8; 3]> {
+        let i = 3 * (y * self.width + x);
+        (x < self.width && y < self.height).then(|| [self.rgb[i], self.rgb[i + 1], self.rgb[i + 2]])
+    }
+}
 
 /// Writes `image` as an 8-bit RGB PNG tagged sRGB (perceptual intent).
 pub fn write(out: impl Write, image: &Image) -> io::Result<()> {

@@ -4,8 +4,9 @@
 //! that the difference between a render and its exact image is the
 //! spectral error alone (a hero render's colour noise included).
 
+use speclab::color::RgbAlbedo;
 use speclab::sampling::reference::ExactPaths;
-use speclab::spectrum::{RgbAlbedo, Spectrum};
+use speclab::spectrum::Spectrum;
 use speclab::{TabulatedSpectrum, Xyz};
 
 use crate::tracer::{Material, Record};

@@ -32,12 +32,13 @@ use std::time::Instant;
 use args::{Args, Mode};
 use exact::{ExactScene, PathRecord};
 use paint::{Fitted, Grey, Hero, Rgb};
+use speclab::color::RgbAlbedo;
 use speclab::color::upsample::RgbSpace;
 use speclab::data::Patch;
 use speclab::sampling::binned::BinnedPdf;
 use speclab::sampling::pdf::WavelengthPdf;
 use speclab::sampling::{reference, rule::Rule, strata::Strata};
-use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, RgbAlbedo, Spectrum};
+use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Spectrum};
 use speclab::{LinearSrgb, TabulatedSpectrum, Xyz};
 use tracer::{Material, Paint, Rng, Scene};
 

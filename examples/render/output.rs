@@ -68,7 +68,7 @@ pub fn delta_e(image: &[Xyz], exact: &[Xyz], white: Xyz) -> [f64; 3] {
         .iter()
         .zip(exact)
         .filter(|(_, e)| e.y <= white.y)
-        .map(|(&p, &e)| speclab::study::perceptual::delta_e00(p, e, white))
+        .map(|(&p, &e)| speclab::study::evaluate::perceptual::delta_e00(p, e, white))
         .collect();
     de.sort_by(f64::total_cmp);
     let n = de.len().max(1);

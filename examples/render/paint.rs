@@ -12,12 +12,13 @@
 //!   colour, channel by channel;
 //! - [`Grey`]: one number per surface, no colour work (the timing baseline).
 
+use speclab::color::RgbAlbedo;
 use speclab::color::upsample::RgbSpace;
 use speclab::sampling::pdf::WavelengthPdf;
 use speclab::sampling::rule::Rule;
 use speclab::sampling::{Emission, SampledWavelengths};
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
-use speclab::spectrum::{Float, Observer, RgbAlbedo};
+use speclab::spectrum::{Float, Observer};
 use speclab::{HeroSample, LinearSrgb, SampledSpectrum, Spectrum, Xyz};
 
 use crate::tracer::{Material, Paint};

@@ -13,8 +13,9 @@
 //!   and encoded sRGB as different types.
 //! - [`adaptation`]: Bradford chromatic adaptation between whites.
 //! - [`lab`]: CIELAB relative to a white (ΔE00 is the study's).
-//! - [`upsample`]: an RGB colour as a spectrum (`RgbAlbedo::new`,
-//!   `RgbUnbounded::new`, `RgbIlluminant::new`), fitted in CIELAB.
+//! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`] ([`rgb_spectra`]):
+//!   an RGB colour as a spectrum, fitted in CIELAB by [`upsample`], or
+//!   looked up in [`rgb_table`].
 //!
 //! [`Xyz`] and [`LinearSrgb`] have the whole component-wise operator set
 //! (`+ - * /` with each other and with scalars on either side, the assign
@@ -32,6 +33,7 @@ pub mod adaptation;
 pub mod display;
 pub mod lab;
 pub mod matrix;
+pub mod rgb_spectra;
 pub mod rgb_table;
 pub mod srgb;
 pub(crate) mod triple;
@@ -40,5 +42,6 @@ mod xyz;
 
 pub use display::{Display, EncodedSrgb, Exposure, GamutMap, Srgb8};
 pub use matrix::Matrix;
+pub use rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded};
 pub use srgb::{LinearSrgb, XYZ_TO_SRGB};
 pub use xyz::Xyz;

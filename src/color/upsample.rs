@@ -8,12 +8,12 @@
 //! takes it to (0.99996, 1.00019, 0.99947), so the space balances each
 //! channel by that (at most 5e-4) and (1, 1, 1) *is* the perfect white.
 //!
-//! - [`RgbAlbedo::new`]: a reflectance whose colour under D65 is the given
+//! - [`RgbAlbedo::new`](crate::color::RgbAlbedo::new): a reflectance whose colour under D65 is the given
 //!   linear sRGB (each component in [0, 1]); black and white are the
 //!   constants 0 and 1, exactly.
-//! - [`RgbUnbounded::new`]: any non-negative colour, as twice its largest
+//! - [`RgbUnbounded::new`](crate::color::RgbUnbounded::new): any non-negative colour, as twice its largest
 //!   component times the albedo of the colour over that.
-//! - [`RgbIlluminant::new`]: a light: that, times D65 normalised so that
+//! - [`RgbIlluminant::new`](crate::color::RgbIlluminant::new): a light: that, times D65 normalised so that
 //!   (1, 1, 1) has the luminance of a constant spectrum of 1.
 //!
 //! **The fit.** `Lab(XYZ(c)) − Lab(target)` is driven to zero by Gauss–
@@ -29,7 +29,7 @@
 //! ```
 //! use speclab::{LinearSrgb, Spectrum};
 //! use speclab::color::upsample::RgbSpace;
-//! use speclab::spectrum::RgbAlbedo;
+//! use speclab::color::RgbAlbedo;
 //! let orange = LinearSrgb::new(0.8, 0.35, 0.05);
 //! let albedo = RgbAlbedo::new(orange)?;
 //! let back = RgbSpace::srgb().rgb_of(&albedo);
@@ -44,12 +44,11 @@ use crate::color::lab::{lab, lab_jacobian};
 use crate::color::matrix::{Matrix, inverse, mul};
 use crate::color::srgb::{LinearSrgb, XYZ_TO_SRGB};
 use crate::color::xyz::Xyz;
-use crate::error::Error;
 use crate::spectrum::data::lights;
-use crate::spectrum::observer::{self, Y_BAR_INTEGRAL};
+use crate::spectrum::observer;
 use crate::spectrum::{
-    LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial,
-    Spectrum, TabulatedSpectrum, integrate, quadrature,
+    LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, SigmoidPolynomial, Spectrum, TabulatedSpectrum, integrate,
+    quadrature,
 };
 
 /// An RGB colour space for upsampling: its illuminant, its white, the
@@ -60,7 +59,7 @@ pub struct RgbSpace {
     /// The illuminant's white, `Y = 1`.
     white: Xyz,
     /// The illuminant's white's Y, as integrated (for normalising).
-    white_y: f64,
+    pub(crate) white_y: f64,
     to_rgb: Matrix,
     to_xyz: Matrix,
     /// `(t, weights)`: the normalised wavelength and `w·L·c̄/Y_white`.
@@ -276,40 +275,4 @@ pub(crate) fn constant(v: f64) -> SigmoidPolynomial {
 fn inverse_sigmoid(s: f64) -> f64 {
     let u = 2.0 * s - 1.0;
     u / (1.0 - u * u).sqrt()
-}
-
-impl RgbAlbedo {
-    /// The reflectance whose colour under D65 is `rgb` (linear sRGB, each
-    /// component in [0, 1]; otherwise an [`Error::Albedo`]). About 10 µs;
-    /// `color::rgb_table` does it in a lookup.
-    pub fn new(rgb: LinearSrgb) -> Result<Self, Error> {
-        let c = rgb.to_array();
-        if !c.iter().all(|v| (0.0..=1.0).contains(v)) {
-            return Err(Error::Albedo { rgb: c });
-        }
-        Ok(RgbAlbedo::from_polynomial(RgbSpace::srgb().fit(c)))
-    }
-}
-
-impl RgbUnbounded {
-    /// Any colour as a non-negative spectrum: twice the largest component
-    /// times the albedo of the colour over that (negative and NaN
-    /// components are taken as 0: outside the gamut, there is no spectrum).
-    #[must_use]
-    pub fn new(rgb: LinearSrgb) -> Self {
-        let (scale, poly) = RgbSpace::srgb().split(rgb);
-        RgbUnbounded::from_parts(scale, poly)
-    }
-}
-
-impl RgbIlluminant {
-    /// A light of colour `rgb`: [`RgbUnbounded`]'s spectrum times D65,
-    /// normalised so that (1, 1, 1) has the luminance of a constant
-    /// spectrum of 1 (`Y = ∫ȳ`).
-    #[must_use]
-    pub fn new(rgb: LinearSrgb) -> Self {
-        let space = RgbSpace::srgb();
-        let (scale, poly) = space.split(rgb);
-        RgbIlluminant::from_parts(scale * Y_BAR_INTEGRAL / space.white_y, poly)
-    }
 }

@@ -71,8 +71,6 @@
 pub mod binned;
 pub mod buckets;
 pub mod choice;
-mod fit;
-mod fit_search;
 pub mod fitted;
 pub mod hero;
 mod light_pdf;

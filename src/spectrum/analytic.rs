@@ -20,7 +20,7 @@
 use std::borrow::Cow;
 
 use crate::error::Error;
-use crate::spectrum::generic::{Pieces, Spectrum};
+use crate::spectrum::interface::{Pieces, Spectrum};
 
 /// The same value at every wavelength.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -40,7 +40,7 @@ use std::borrow::Cow;
 use std::marker::PhantomData;
 
 use crate::spectrum::float::Float;
-use crate::spectrum::generic::{Pieces, Spectrum};
+use crate::spectrum::interface::{Pieces, Spectrum};
 use crate::spectrum::lookup::{DENSE_ENTRIES, OUTSIDE, nearest_nm};
 use crate::spectrum::observer::{Observer, xyz_bar_const};
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};

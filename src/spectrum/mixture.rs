@@ -16,7 +16,7 @@
 use std::borrow::Cow;
 
 use crate::error::Error;
-use crate::spectrum::generic::{Pieces, Spectrum};
+use crate::spectrum::interface::{Pieces, Spectrum};
 
 /// `Σ wᵢ·Sᵢ(λ)` over borrowed spectra.
 #[derive(Clone, Default)]

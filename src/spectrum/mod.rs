@@ -12,8 +12,8 @@
 //!   the observer so.
 //! - [`Constant`], [`Blackbody`], [`FnSpectrum`] (a closure), [`Mixture`]
 //!   (a weighted sum: a scene's lights).
-//! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`]: spectra of RGB
-//!   colours (sigmoid polynomials); fitted by `color::upsample`.
+//! - [`SigmoidPolynomial`]: the function behind the spectra of RGB
+//!   colours (`color::RgbAlbedo` and its siblings, one floor up).
 //! - [`SampledSpectrum`]: a spectrum's values at K wavelengths (any
 //!   [`Wavelengths`]), with point-wise arithmetic, in `f64` or `f32`
 //!   ([`Float`]).
@@ -45,8 +45,8 @@ pub(crate) mod cache;
 pub mod data;
 mod dense;
 mod float;
-mod generic;
 pub(crate) mod integrate;
+mod interface;
 pub(crate) mod lookup;
 mod mixture;
 pub mod observer;
@@ -68,12 +68,12 @@ pub use analytic::{Blackbody, Constant, FnSpectrum};
 pub use cache::Cache;
 pub use dense::{DenseObserver, DenseSpectrum};
 pub use float::{Float, Lanes};
-pub use generic::{Pieces, Samples, Spectrum};
+pub use interface::{Pieces, Samples, Spectrum};
 pub use mixture::Mixture;
 pub use observer::{Cie1931, Observer};
 pub use optics::{Cauchy, Conductor, NormalReflectance, Sellmeier};
 pub use product::Product;
 pub use sampled::{SampledSpectrum, Wavelengths};
-pub use sigmoid::{RgbAlbedo, RgbIlluminant, RgbUnbounded, SigmoidPolynomial, sigmoid};
+pub use sigmoid::{SigmoidPolynomial, sigmoid};
 pub use tabulated::{Tables, TabulatedSpectrum};
 pub use validate::{Interpolation, Role};

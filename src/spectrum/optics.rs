@@ -27,7 +27,7 @@
 //! ```
 
 use crate::error::Error;
-use crate::spectrum::generic::{Pieces, Spectrum};
+use crate::spectrum::interface::{Pieces, Spectrum};
 use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 

@@ -17,7 +17,7 @@
 
 use std::borrow::Cow;
 
-use crate::spectrum::generic::{Pieces, Spectrum};
+use crate::spectrum::interface::{Pieces, Spectrum};
 
 /// `Πᵢ Sᵢ(λ)` over borrowed spectra (1 for none).
 #[derive(Clone, Default)]

@@ -9,15 +9,10 @@
 //! smooth, in [0, 1] everywhere, three numbers per colour. `x = ±∞` gives
 //! the constants 0 and 1 exactly (black and white).
 //!
-//! - [`RgbAlbedo`]: a reflectance, `s(λ)`, in [0, 1];
-//! - [`RgbUnbounded`]: `scale · s(λ)`, any non-negative colour (an
-//!   emission or a scattering coefficient);
-//! - [`RgbIlluminant`]: `scale · s(λ) · D65(λ)`, a light of a colour, the
-//!   colour space's illuminant tinted.
-//!
-//! Their coefficients are fitted to a colour by `RgbAlbedo::new` and its
-//! siblings, which live with colour (`color::upsample`, one floor up): the
-//! fit needs CIELAB. This floor evaluates them.
+//! The spectra of RGB colours built on it (`RgbAlbedo`, `RgbUnbounded`,
+//! `RgbIlluminant`) live with colour (`color::rgb_spectra`, one floor
+//! up), beside the fit that gives their coefficients: the fit needs
+//! CIELAB. This floor evaluates the polynomial.
 //!
 //! ```
 //! use speclab::spectrum::SigmoidPolynomial;
@@ -31,9 +26,7 @@
 
 use std::borrow::Cow;
 
-use crate::spectrum::data::lights;
-use crate::spectrum::generic::{Pieces, Spectrum};
-use crate::spectrum::tabulated::TabulatedSpectrum;
+use crate::spectrum::interface::Pieces;
 use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH};
 
 /// `½ + x/(2√(1 + x²))` over a quadratic in `t = (λ − 380)/350`.
@@ -72,6 +65,14 @@ impl SigmoidPolynomial {
     fn is_constant(&self) -> bool {
         self.c[0] == 0.0 && self.c[1] == 0.0
     }
+
+    /// Constant pieces (none: integrated exactly) for a constant
+    /// polynomial, `None` (integrated by quadrature) otherwise: the
+    /// [`Spectrum::pieces`](crate::spectrum::Spectrum::pieces) of the
+    /// spectra built on it.
+    pub(crate) fn pieces(&self) -> Option<Pieces<'static>> {
+        self.is_constant().then_some(Pieces { breaks: Cow::Borrowed(&[]), degree: 0 })
+    }
 }
 
 /// `½ + x/(2√(1 + x²))`, with ±∞ going to 1 and 0.
@@ -82,104 +83,4 @@ pub fn sigmoid(x: f64) -> f64 {
         return if x > 0.0 { 1.0 } else { 0.0 };
     }
     0.5 + 0.5 * x / (1.0 + x * x).sqrt()
-}
-
-/// Constant pieces for a constant polynomial, none otherwise.
-fn constant_pieces(poly: &SigmoidPolynomial) -> Option<Pieces<'static>> {
-    poly.is_constant().then_some(Pieces { breaks: Cow::Borrowed(&[]), degree: 0 })
-}
-
-/// A reflectance from an RGB colour: a sigmoid polynomial, in [0, 1].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RgbAlbedo {
-    pub(crate) poly: SigmoidPolynomial,
-}
-
-impl RgbAlbedo {
-    /// The albedo of `poly`.
-    #[must_use]
-    pub const fn from_polynomial(poly: SigmoidPolynomial) -> Self {
-        RgbAlbedo { poly }
-    }
-
-    /// Its sigmoid polynomial.
-    #[must_use]
-    pub const fn polynomial(&self) -> SigmoidPolynomial {
-        self.poly
-    }
-}
-
-impl Spectrum for RgbAlbedo {
-    #[inline]
-    fn eval(&self, lambda: f64) -> f64 {
-        self.poly.eval(lambda)
-    }
-
-    fn pieces(&self) -> Option<Pieces<'_>> {
-        constant_pieces(&self.poly)
-    }
-}
-
-/// Any non-negative colour: `scale · s(λ)` (pbrt-v4's
-/// `RGBUnboundedSpectrum`: the colour over twice its largest component is
-/// fitted as an albedo, then scaled back).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RgbUnbounded {
-    pub(crate) scale: f64,
-    pub(crate) poly: SigmoidPolynomial,
-}
-
-impl RgbUnbounded {
-    /// `scale` times the sigmoid polynomial `poly`.
-    #[must_use]
-    pub const fn from_parts(scale: f64, poly: SigmoidPolynomial) -> Self {
-        RgbUnbounded { scale, poly }
-    }
-
-    /// The scale.
-    #[must_use]
-    pub const fn scale(&self) -> f64 {
-        self.scale
-    }
-}
-
-impl Spectrum for RgbUnbounded {
-    #[inline]
-    fn eval(&self, lambda: f64) -> f64 {
-        self.scale * self.poly.eval(lambda)
-    }
-
-    fn pieces(&self) -> Option<Pieces<'_>> {
-        constant_pieces(&self.poly)
-    }
-}
-
-/// A light of an RGB colour: `scale · s(λ) · D65(λ)`, the colour space's
-/// illuminant (the tabulated D65, normalised so that its white has Y = 1)
-/// tinted by an albedo (pbrt-v4's `RGBIlluminantSpectrum`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RgbIlluminant {
-    pub(crate) scale: f64,
-    pub(crate) poly: SigmoidPolynomial,
-}
-
-impl RgbIlluminant {
-    /// `scale` times `poly` times the normalised D65.
-    #[must_use]
-    pub const fn from_parts(scale: f64, poly: SigmoidPolynomial) -> Self {
-        RgbIlluminant { scale, poly }
-    }
-
-    /// The illuminant it tints: D65 as tabulated in `data/`.
-    #[must_use]
-    pub fn illuminant() -> &'static TabulatedSpectrum {
-        &lights::D65
-    }
-}
-
-impl Spectrum for RgbIlluminant {
-    #[inline]
-    fn eval(&self, lambda: f64) -> f64 {
-        self.scale * self.poly.eval(lambda) * lights::D65.eval(lambda)
-    }
 }

@@ -29,7 +29,7 @@ use std::fmt;
 use crate::error::Error;
 use crate::spectrum::cache::Cache;
 use crate::spectrum::float::Float;
-use crate::spectrum::generic::{Pieces, Samples, Spectrum};
+use crate::spectrum::interface::{Pieces, Samples, Spectrum};
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::piecewise::View;

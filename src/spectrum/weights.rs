@@ -31,8 +31,8 @@
 use std::borrow::Cow;
 
 use crate::spectrum::cache::{Weights, stencil};
-use crate::spectrum::generic::Spectrum;
 use crate::spectrum::integrate;
+use crate::spectrum::interface::Spectrum;
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::observer;
 use crate::spectrum::piecewise::pieces_into;

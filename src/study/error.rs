@@ -2,7 +2,7 @@
 //! plus what only a study asks (an empty scene, a budget).
 //!
 //! ```
-//! use speclab::study::{plan::{self, Request}, scene, StudyError};
+//! use speclab::study::{planning::plan::{self, Request}, evaluate::scene, StudyError};
 //! let err = plan::plan(&[], &scene::builtin_surfaces(), &Request::default()).unwrap_err();
 //! assert!(matches!(err, StudyError::EmptyScene));
 //! assert_eq!(err.to_string(), "expected a scene of at least one light and one surface, found none");

@@ -132,8 +132,8 @@ fn drawing(c: &mut Criterion) {
 /// an RGB albedo.
 fn evaluating(c: &mut Criterion) {
     use speclab::LinearSrgb;
+    use speclab::color::RgbAlbedo;
     use speclab::color::rgb_table::RgbTable;
-    use speclab::spectrum::RgbAlbedo;
     let h = HeroSample::<4>::new(0.3);
     let patch = &data::patches::H4;
     let dense = DenseSpectrum::<f64>::new(patch);

@@ -22,9 +22,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use speclab::Role;
-use speclab::study::chart::{self, Point};
-use speclab::study::report;
-use speclab::study::scene::{self, Choice, Depth, Named};
+use speclab::study::evaluate::scene::{self, Choice, Depth, Named};
+use speclab::study::planning::chart::{self, Point};
+use speclab::study::present::report;
 use speclab_tools::chart as draw;
 
 const USAGE: &str = "\

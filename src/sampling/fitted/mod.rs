@@ -1,0 +1,177 @@
+//! Wavelength rules fitted to a scene's lights: M wavelengths and a 3 × M
+//! weight matrix, `XYZ꜀ ≈ Σᵢ w꜀ᵢ·v(λᵢ)`, where `v` is the path's spectral
+//! value (light × reflectances) at `λᵢ`.
+//!
+//! Equidistant buckets put their M wavelengths everywhere alike, and under
+//! F11 they straddle its three narrow lines. A fitted rule puts them where
+//! the lights need them: Meyer's 1988 idea of choosing rendering wavelengths
+//! by quadrature, fitted per scene. [`Rule::fit`] chooses the
+//! wavelengths and weights that reproduce, by weighted least squares, the
+//! exact XYZ of each light times each reflectance of a smooth prior
+//! ([`super::prior`]; see `problem.rs` for the weighting and the anchors,
+//! `search.rs` for the search). The weights apply to the product, so one rule serves every
+//! intensity of its lights and every path through the scene.
+//!
+//! The rule reproduces the perfect white under each of its lights, and the
+//! prior's mean reflectance, to [`ANCHOR_TOLERANCE`] (relative). In a
+//! release build a fit takes about 85 ms the first time in a process (the
+//! prior's moments, computed once) and 10–20 ms after, for M ≤ 16 and one
+//! to three lights; it is deterministic.
+//!
+//! The fit is a [`Rule`] (M chosen at run time); a renderer takes it as a
+//! `Copy` value, [`Rule::wavelengths`] (a `SampledWavelengths<M, T>`),
+//! evaluates its spectra there as a `SampledSpectrum<M, T>` and converts
+//! with the weights: no allocation per sample.
+//!
+//! ```
+//! use speclab::data::{lights, patches};
+//! use speclab::sampling::{reference, rule::Rule};
+//! let rule = Rule::fit(&[&lights::F11], 10)?;
+//! let at = rule.wavelengths::<10, f64>()?;
+//! let (le, albedo) = (lights::F11.sample(&at), patches::G4.sample(&at));
+//! let fitted = at.to_xyz(le * albedo);
+//! let exact = reference::xyz(&lights::F11, &patches::G4);
+//! assert!((fitted.y - exact.y).abs() < 0.01 * exact.y);
+//! assert!(Rule::fit(&[&lights::F11], 0).is_err());
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+mod problem;
+mod search;
+
+use std::sync::{Arc, OnceLock};
+
+use crate::error::Error;
+use crate::sampling::fitted::problem::{CANDIDATES, Problem};
+use crate::sampling::rule::{MAX_M, Rule, check_m};
+use crate::spectrum::{LAMBDA_MIN, Spectrum};
+
+/// How closely a rule reproduces the XYZ of the perfect white under each of
+/// its lights and of the prior's mean reflectance, relative (tested).
+pub const ANCHOR_TOLERANCE: f64 = 1e-3;
+
+/// The part of a fit that depends on the lights alone (the normal
+/// equations over the prior): build it once to fit several M.
+pub struct FitProblem(Problem);
+
+impl std::fmt::Debug for FitProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("FitProblem").finish_non_exhaustive()
+    }
+}
+
+impl FitProblem {
+    /// The problem for `lights`; an [`Error::NoMass`] as in
+    /// [`Rule::fit`].
+    pub fn new(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
+        Problem::new(lights).map(FitProblem)
+    }
+
+    /// The rule of `m` wavelengths, `m` clamped into 1 ..= [`MAX_M`].
+    #[must_use]
+    pub fn rule(&self, m: usize) -> Rule {
+        let mut rules = fit(&self.0, m);
+        rules.swap_remove(0)
+    }
+}
+
+/// The rules of a problem's groups at `m` (clamped into 1 ..= MAX_M): one
+/// per group, at the same wavelengths.
+fn fit(problem: &Problem, m: usize) -> Vec<Rule> {
+    let (nodes, weights) = problem.fit(m.clamp(1, MAX_M.min(CANDIDATES)));
+    let lambda: Vec<f64> = nodes.iter().map(|&j| LAMBDA_MIN + j as f64).collect();
+    weights.into_iter().map(|w| Rule::fitted(lambda.clone(), w)).collect()
+}
+
+impl Rule {
+    /// The rule of `m` wavelengths fitted to `lights` (one to a few; the
+    /// scene's). An [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`]; an
+    /// [`Error::NoMass`] for no lights or one whose white is not positive
+    /// in X, Y and Z.
+    pub fn fit(lights: &[&dyn Spectrum], m: usize) -> Result<Rule, Error> {
+        check_m("a fitted wavelength count", m)?;
+        Ok(FitProblem::new(lights)?.rule(m))
+    }
+
+    /// One rule per light, all at the same `m` wavelengths, each with
+    /// weights of its own for its light: the wavelengths chosen for the
+    /// lights together, the weights for each apart. A renderer that knows
+    /// which light each contribution came from (next-event estimation
+    /// does) carries one set of `m` values per path and converts each
+    /// light's contribution with that light's weights
+    /// ([`SampledWavelengths::emission`](crate::sampling::SampledWavelengths::emission)):
+    /// more accurate than one rule serving every light whenever the lights
+    /// differ (F11 and A in one scene: ΔE00 over the six patches at
+    /// M = 10 at most 0.34 with each light's weights, 1.6 with one
+    /// rule for both; measured by `tests/fitted.rs`). Errors as [`Rule::fit`].
+    ///
+    /// ```
+    /// use speclab::data::{lights, patches};
+    /// use speclab::sampling::{reference, rule::Rule};
+    /// let rules = Rule::fit_each(&[&lights::F11, &lights::A], 10)?;
+    /// assert_eq!(rules[0].lambda(), rules[1].lambda());
+    /// let one = Rule::fit(&[&lights::F11, &lights::A], 10)?; // one rule for both
+    /// let at = rules[0].wavelengths::<10, f64>()?;
+    /// let albedo = patches::G4.sample(&at); // the same values for every light
+    /// let own = rules[1].wavelengths::<10, f64>()?.emission(&lights::A).xyz(albedo);
+    /// let shared = one.wavelengths::<10, f64>()?.emission(&lights::A).xyz(albedo);
+    /// let exact = reference::xyz(&lights::A, &patches::G4);
+    /// assert!((own.x - exact.x).abs() < (shared.x - exact.x).abs());
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    pub fn fit_each(lights: &[&dyn Spectrum], m: usize) -> Result<Vec<Rule>, Error> {
+        check_m("a fitted wavelength count", m)?;
+        Ok(fit(&Problem::each(lights)?, m))
+    }
+}
+
+/// The rules fitted to one light, every M fitted once: kept by the light
+/// if it has a [`Cache`](crate::spectrum::Cache), so that asking again
+/// (another M, another surface, another trial) costs a lookup.
+///
+/// ```
+/// use speclab::data::lights;
+/// use speclab::sampling::fitted::FittedRules;
+/// let f11 = FittedRules::of(&lights::F11)?;
+/// assert_eq!(f11.rule(10)?.m(), 10);
+/// assert!(std::ptr::eq(f11.rule(10)?, FittedRules::of(&lights::F11)?.rule(10)?)); // kept
+/// # Ok::<(), speclab::Error>(())
+/// ```
+#[derive(Clone)]
+pub struct FittedRules(Arc<Fits>);
+
+impl std::fmt::Debug for FittedRules {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let fitted: Vec<usize> = (1..=MAX_M).filter(|&m| self.0.rules[m - 1].get().is_some()).collect();
+        f.debug_struct("FittedRules").field("fitted", &fitted).finish_non_exhaustive()
+    }
+}
+
+/// A light's fit problem and its rules by M.
+struct Fits {
+    problem: FitProblem,
+    rules: [OnceLock<Rule>; MAX_M],
+}
+
+impl FittedRules {
+    /// The rules of `light` (the light's own, if it keeps a cache); an
+    /// [`Error::NoMass`] as in [`Rule::fit`].
+    pub fn of(light: &(impl Spectrum + ?Sized)) -> Result<Self, Error> {
+        let make = || {
+            FitProblem::new(&[&light])
+                .map(|problem| Fits { problem, rules: [const { OnceLock::new() }; MAX_M] })
+        };
+        match light.cache() {
+            Some(cache) => cache.derived(0, make).map(FittedRules),
+            None => make().map(|f| FittedRules(Arc::new(f))),
+        }
+    }
+
+    /// The rule of `m` wavelengths, fitted on first use: the same rule as
+    /// [`Rule::fit`]`(&[light], m)`. An [`Error::Count`] unless
+    /// `1 ≤ m ≤` [`MAX_M`].
+    pub fn rule(&self, m: usize) -> Result<&Rule, Error> {
+        check_m("a fitted wavelength count", m)?;
+        Ok(self.0.rules[m - 1].get_or_init(|| self.0.problem.rule(m)))
+    }
+}
