@@ -128,6 +128,22 @@ fn the_rules_are_a_regression_snapshot() {
     assert_eq!(Rule::fit(&[&lights::D65], 6).unwrap().lambda(), [437.0, 474.0, 517.0, 559.0, 599.0, 641.0]);
 }
 
+/// A light's rules are kept per M, from 1 to `MAX_M`, and say which are
+/// fitted.
+#[test]
+fn a_lights_rules_are_kept_for_every_m() {
+    use speclab::sampling::fitted::FittedRules;
+    let light = TabulatedSpectrum::new(vec![380.0, 730.0], vec![1.0, 2.0], Role::Light).unwrap();
+    let rules = FittedRules::of(&light).unwrap();
+    assert_eq!(format!("{rules:?}"), "FittedRules { fitted: [], .. }");
+    assert_eq!(rules.rule(MAX_M).unwrap().m(), MAX_M);
+    assert_eq!(rules.rule(1).unwrap().m(), 1);
+    assert_eq!(format!("{rules:?}"), format!("FittedRules {{ fitted: [1, {MAX_M}], .. }}"));
+    assert!(rules.rule(0).is_err() && rules.rule(MAX_M + 1).is_err());
+    let problem = FitProblem::new(&[&light]).unwrap();
+    assert_eq!(format!("{problem:?}"), "FitProblem { .. }");
+}
+
 /// The same lights give the same rule: fitted twice from scratch, and from
 /// the light at another scale (the weights apply to the product, so a
 /// brighter light needs the same ones).

@@ -164,7 +164,7 @@ fn swatch_legend(gamut: GamutMap) -> String {
         GamutMap::Chroma => "out-of-gamut colours desaturated, hue and luminance kept",
     };
     format!(
-        "swatches: exposed so the light's white just fits the display in its own colour; {how} (--gamut {}); sRGB",
+        "swatches: exposed so the light's white just fits the display in its own colour; {how} (gamut map {}); sRGB",
         gamut
     )
 }

@@ -22,7 +22,7 @@ pub fn plan_text(
     let bias = if request.allow_bias {
         "allowed (regular buckets, and rules fitted to the scene's lights, are candidates)"
     } else {
-        "excluded (--unbiased)"
+        "excluded (Monte Carlo only: unbiased)"
     };
     writeln!(out, "bias: {bias}")?;
     writeln!(out, "paths: light × surface^{} (depth {})", request.depth, request.depth)?;
@@ -132,7 +132,7 @@ mod tests {
         plan_text(&mut out, &lights[..1], &surfaces[..1], &unbiased, &plan).unwrap();
         let text = String::from_utf8(out).unwrap();
         assert!(text.contains("plan         none: no candidate is within budget"), "{text}");
-        assert!(text.contains("bias: excluded (--unbiased)"), "{text}");
+        assert!(text.contains("bias: excluded (Monte Carlo only: unbiased)"), "{text}");
         assert!(text.trim_end().ends_with("biased (excluded)"), "{text}");
         assert!(!text.contains("not needed"), "{text}");
     }
