@@ -44,7 +44,7 @@ use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::pdf::{Uniform, WavelengthPdf};
 use crate::sampling::strata::Strata;
-use crate::sampling::wavelengths::{SampledWavelengths, dot};
+use crate::sampling::wavelengths::{SampledWavelengths, dot_slices};
 use crate::spectrum::observer::{self, Cie1931, Observer};
 use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
@@ -318,7 +318,11 @@ pub fn estimate_width<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
         light.eval_many(lambda, light_at);
         surface.eval_many(lambda, surface_at);
         light_at.iter_mut().zip(surface_at.iter()).for_each(|(l, s)| *l *= s);
-        sum += Xyz::from(rows.each_ref().map(|row| dot(&row[..k], light_at)));
+        sum += Xyz::new(
+            dot_slices(&rows[0][..k], light_at),
+            dot_slices(&rows[1][..k], light_at),
+            dot_slices(&rows[2][..k], light_at),
+        );
     }
     Ok(sum / n.get() as f64)
 }

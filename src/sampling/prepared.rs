@@ -116,7 +116,7 @@ impl<'a, L: Spectrum + ?Sized> PreparedLight<'a, L> {
         // On an equidistant grid, margins for plain second differences: the
         // middle segments' largest, and each end segment's own.
         let scale = self.weights.step().filter(|_| cubic && n >= 5).map(|h| 1.0 / (2.0 * h * h));
-        let middle = scale.map(|s| s * margins[1..n - 2].iter().fold(0.0, |a: f64, &b| a.max(b)));
+        let middle = scale.map(|s| s * self.weights.middle_margin());
         let w = self.weights.samples();
         for (i, (y, o)) in r.chunks_exact(n).zip(out.iter_mut()).enumerate() {
             let mut sum = dot(w, y);

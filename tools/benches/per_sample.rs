@@ -142,12 +142,12 @@ fn evaluating(c: &mut Criterion) {
     let table = RgbTable::srgb();
     let mut group = c.benchmark_group("a spectrum at 4 wavelengths");
     group.bench_function("TabulatedSpectrum (exact cubic)", |b| {
-        b.iter(|| black_box(h).sample(black_box(patch)))
+        b.iter(|| black_box(&h).sample(black_box(patch)))
     });
     group.bench_function("DenseSpectrum (1 nm, nearest)", |b| {
-        b.iter(|| black_box(h).sample(black_box(&dense)))
+        b.iter(|| black_box(&h).sample(black_box(&dense)))
     });
-    group.bench_function("RgbAlbedo (sigmoid)", |b| b.iter(|| black_box(h).sample(black_box(&albedo))));
+    group.bench_function("RgbAlbedo (sigmoid)", |b| b.iter(|| black_box(&h).sample(black_box(&albedo))));
     group.bench_function("RgbAlbedo::new (Gauss-Newton fit)", |b| b.iter(|| RgbAlbedo::new(black_box(rgb))));
     group.bench_function("RgbTable::albedo (lookup)", |b| b.iter(|| table.albedo(black_box(rgb))));
     group.finish();
@@ -186,8 +186,8 @@ fn path_tracer_ops(c: &mut Criterion) {
             (v.average(), v.max_value(), v.is_black())
         })
     });
-    group.bench_function("y (luminance alone)", |b| b.iter(|| black_box(h).y(black_box(le))));
-    group.bench_function("to_xyz", |b| b.iter(|| black_box(h).to_xyz(black_box(le))));
+    group.bench_function("y (luminance alone)", |b| b.iter(|| black_box(&h).y(black_box(le))));
+    group.bench_function("to_xyz", |b| b.iter(|| black_box(&h).to_xyz(black_box(le))));
     group.finish();
 }
 

@@ -55,7 +55,7 @@ use crate::sampling::reference;
 use crate::sampling::rule::{MAX_M, Rule};
 use crate::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::study::error::StudyError;
-use crate::study::evaluate::scene::Depth;
+use crate::study::evaluate::scene::{Depth, MAX_DEPTH};
 
 /// How wavelengths are chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -264,9 +264,12 @@ impl Estimator<'_> {
         rng: &mut R,
     ) -> Result<Xyz, StudyError> {
         let (light, depth) = (self.light, self.depth);
-        let path = depth.path(surface);
-        let mut factors: Vec<&dyn Spectrum> = vec![light];
-        factors.extend_from_slice(path.factors());
+        // The light, then the surface `depth` times: on the stack, so that
+        // an estimate allocates nothing (what `study::cost` times).
+        let s: &dyn Spectrum = surface;
+        let mut factors = [s; 1 + MAX_DEPTH];
+        factors[0] = light;
+        let factors = &factors[..=depth.get()];
         let m = samples.get();
         Ok(match self.method {
             Method::Reference if depth == Depth::ONE => reference::xyz(light, surface),
@@ -277,11 +280,11 @@ impl Estimator<'_> {
                 if depth == Depth::ONE {
                     hero::estimate_width(k, light, surface, samples, pdf, sampling.strata, rng)?
                 } else {
-                    hero::estimate_width(k, light, &path, samples, pdf, sampling.strata, rng)?
+                    hero::estimate_width(k, light, &depth.path(surface), samples, pdf, sampling.strata, rng)?
                 }
             }
-            Method::Buckets { rule } => Rule::buckets(m, rule)?.xyz_of_product(&factors),
-            Method::Fitted => self.rule(m)?.ok_or(Error::NoMass)?.xyz_of_product(&factors),
+            Method::Buckets { rule } => Rule::buckets(m, rule)?.xyz_of_product(factors),
+            Method::Fitted => self.rule(m)?.ok_or(Error::NoMass)?.xyz_of_product(factors),
         })
     }
 
