@@ -219,3 +219,27 @@ pub(crate) fn dot_slices(w: &[f64], values: &[f64]) -> f64 {
     }
     (acc[0] + acc[2]) + (acc[1] + acc[3])
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{dot, dot_slices};
+
+    /// The run-time form is the compile-time form to the bit, for every
+    /// count from 0 to 13 (whole chunks, remainders, and values shorter
+    /// than the weights, which count as 0).
+    #[test]
+    fn both_forms_of_the_sum_agree_to_the_bit() {
+        let w: Vec<f64> = (0..13).map(|i| 1.0 / (f64::from(i) + 1.7)).collect();
+        let v: Vec<f64> = (0..13).map(|i| (f64::from(i) * 0.618_034).fract() - 0.3).collect();
+        for n in 0..=13 {
+            let by_hand = (0..n).fold([0.0; 4], |mut acc, i| {
+                acc[i % 4] += w[i] * v[i];
+                acc
+            });
+            let expected = (by_hand[0] + by_hand[2]) + (by_hand[1] + by_hand[3]);
+            assert_eq!(dot(&w[..n], &v[..n]).to_bits(), expected.to_bits(), "n = {n}");
+            assert_eq!(dot_slices(&w[..n], &v[..n]).to_bits(), expected.to_bits(), "n = {n}");
+            assert_eq!(dot_slices(&w, &v[..n]).to_bits(), expected.to_bits(), "missing values, n = {n}");
+        }
+    }
+}
