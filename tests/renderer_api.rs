@@ -301,4 +301,32 @@ fn exact_paths_are_brute_force_quadrature() {
         }
     }
     assert!(scene.xyz(6, &[], &[1.0]).is_err() && scene.xyz(0, &[9], &[1.0, 1.0]).is_err());
+    // At least 70 pieces (F11's 5 nm lines over 380–730 nm), each with a
+    // rule exact for degree 1 + 4·3 + 3 = 16 (the light, four cubics, the
+    // observer): 9 nodes or more per piece.
+    assert!(scene.nodes() >= 70 * 9, "{} nodes", scene.nodes());
+}
+
+/// A light folded into the weights (`SampledWavelengths::emission`) gives
+/// what multiplying by the light and converting gives, for hero samples
+/// and for a fitted rule's wavelengths, in f64 and f32.
+#[test]
+fn emission_is_the_light_folded_into_the_weights() {
+    use speclab::sampling::rule::Rule;
+    let (light, surface) = (&data::lights::F11, &data::patches::G4);
+    for u in [0.0, 0.3, 0.77] {
+        let h = HeroSample::<4>::new(u);
+        let beta = surface.sample(&h) * 0.7;
+        let (folded, direct) = (h.emission(light).xyz(beta), h.to_xyz(beta * light.sample(&h)));
+        assert!(
+            (folded - direct).to_array().iter().all(|d| d.abs() <= 1e-12 * direct.y),
+            "{folded:?} {direct:?}"
+        );
+        assert!(folded.y > 0.0);
+    }
+    let at = Rule::fit(&[light], 10).expect("a rule").wavelengths::<10, f32>().expect("M = 10");
+    let beta = surface.sample(&at);
+    let (folded, direct) = (at.emission(light).xyz(beta), at.to_xyz(beta * light.sample(&at)));
+    assert!((folded - direct).to_array().iter().all(|d| d.abs() <= 1e-5 * direct.y), "{folded:?} {direct:?}");
+    assert!((direct.y - reference::xyz(light, surface).y).abs() < 0.02 * direct.y);
 }
