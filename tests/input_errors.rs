@@ -216,3 +216,15 @@ fn binary_input_is_an_io_error() {
     assert!(matches!(err, Error::Io { .. }), "{err:?}");
     assert!(err.to_string().starts_with("lamp.bin: cannot read:"), "{err}");
 }
+
+/// A format stated with `with_format` is the one parsed: two-column text
+/// read as JSON or as the brace notation is an error, read as columns (or
+/// detected) it loads.
+#[test]
+fn a_stated_format_is_the_one_parsed() {
+    let text = "380 0.5\n555 0.7\n730 0.6";
+    assert!(Load::new(Role::Light).text(text, "in.txt").is_ok());
+    assert!(Load::new(Role::Light).with_format(Format::Columns).text(text, "in.txt").is_ok());
+    assert!(Load::new(Role::Light).with_format(Format::Json).text(text, "in.txt").is_err());
+    assert!(Load::new(Role::Light).with_format(Format::Brace).text(text, "in.txt").is_err());
+}
