@@ -59,6 +59,23 @@ fn clamped_segments_are_integrated_exactly() {
     }
 }
 
+/// The same on a fine grid (0.5 nm, 701 samples): the screen that decides
+/// which segments might overshoot scales with the grid's step, and a step
+/// below 1 nm must not let an overshoot through.
+#[test]
+fn clamped_segments_on_a_fine_grid() {
+    let fine: Vec<f64> = (0..701).map(|i| 380.0 + 0.5 * f64::from(i)).collect();
+    let values: Vec<f64> = (0..701).map(|i| if i % 3 == 0 { 1.0 } else { 0.02 }).collect();
+    let s = TabulatedSpectrum::new(fine.clone(), values.clone(), Role::Reflectance).expect("valid");
+    for light in Light::APPENDIX {
+        let l = light.spectrum();
+        let white = reference::white(l).y;
+        let slow = reference::xyz_of_product(&[l, &s]);
+        let prepared = PreparedLight::for_grid(l, &fine, Interpolation::Cubic).expect("valid grid");
+        assert!(close(prepared.xyz_samples(&values).expect("in range"), slow, white), "{light:?}");
+    }
+}
+
 /// A light prepared at run time (a loaded, non-uniform one here) gives the
 /// same as integration, and so does a surface off the light's grid.
 #[test]
