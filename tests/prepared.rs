@@ -76,6 +76,34 @@ fn clamped_segments_on_a_fine_grid() {
     }
 }
 
+/// Overshoots that the samples do not show: a plateau of 0.99 between
+/// 0.9s, whose cubic rises just above 1 (clamped: 1.0 exactly at the
+/// plateau's middle), in the middle and at each end of a 10 nm and a
+/// 0.5 nm grid. The screen that lets a spectrum skip the exact correction
+/// must not pass these: every one is integrated exactly.
+#[test]
+fn small_overshoots_between_samples_are_caught() {
+    let lights = [Light::A.spectrum(), Light::F11.spectrum()];
+    for step in [10.0, 0.5] {
+        let n = (350.0 / step) as usize + 1;
+        let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
+        for at in [0, n / 2, n - 4] {
+            let mut values = vec![0.5; n];
+            values[at..at + 4].copy_from_slice(&[0.9, 0.99, 0.99, 0.9]);
+            let s = TabulatedSpectrum::new(lambda.clone(), values.clone(), Role::Reflectance).expect("valid");
+            let middle = lambda[at + 1] + 0.5 * step;
+            assert_eq!(s.eval(middle), 1.0, "step {step}, at {at}: the cubic overshoots 1");
+            for l in lights {
+                let white = reference::white(l).y;
+                let slow = reference::xyz_of_product(&[l, &s]);
+                let prepared = PreparedLight::for_grid(l, &lambda, Interpolation::Cubic).expect("valid grid");
+                let fast = prepared.xyz_samples(&values).expect("in range");
+                assert!(close(fast, slow, white), "step {step}, at {at}: {fast:?} vs {slow:?}");
+            }
+        }
+    }
+}
+
 /// A light prepared at run time (a loaded, non-uniform one here) gives the
 /// same as integration, and so does a surface off the light's grid.
 #[test]
