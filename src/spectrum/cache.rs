@@ -206,3 +206,39 @@ pub(crate) fn equidistant_step(grid: &[f64]) -> Option<f64> {
 pub(crate) fn stencil(cubic: bool, k: usize, n: usize) -> (usize, usize) {
     if cubic { (speclab_tables::interp::stencil(k, n), 4) } else { (k, 2) }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::equidistant_step;
+
+    /// The step of an equally spaced grid, to 1e-9 of it; `None` for any
+    /// other grid.
+    #[test]
+    fn the_step_of_an_equidistant_grid() {
+        let grid = |h: f64, n: usize| (0..n).map(|i| 380.0 + h * i as f64).collect::<Vec<f64>>();
+        assert_eq!(equidistant_step(&grid(10.0, 36)), Some(10.0));
+        assert_eq!(equidistant_step(&grid(0.5, 701)), Some(0.5));
+        assert_eq!(equidistant_step(&[400.0, 700.0]), Some(300.0));
+        let mut uneven = grid(10.0, 36);
+        uneven[17] += 1e-9; // 1e-10 of the step: within the tolerance
+        assert_eq!(equidistant_step(&uneven).map(|h| (h - 10.0).abs() < 1e-12), Some(true));
+        uneven[17] += 1e-6; // 1e-7 of the step: not equidistant
+        assert_eq!(equidistant_step(&uneven), None);
+        assert_eq!(equidistant_step(&[380.0, 390.0, 410.0]), None);
+    }
+
+    /// A light's weights keep their grid's step and the largest middle
+    /// margin.
+    #[test]
+    fn weights_keep_the_step_and_the_middle_margin() {
+        use crate::spectrum::{Interpolation, data::lights};
+        let grid: Vec<f64> = (0..36).map(|i| 380.0 + 10.0 * f64::from(i)).collect();
+        let w = super::Weights::compute(&lights::A, &grid, Interpolation::Cubic);
+        assert_eq!(w.step(), Some(10.0));
+        let m = w.margins();
+        assert_eq!(w.middle_margin(), m[1..m.len() - 1].iter().fold(0.0, |a: f64, &b| a.max(b)));
+        assert!(w.middle_margin() > 0.0 && m.len() == 35);
+        let uneven = [380.0, 400.0, 450.0, 600.0, 730.0];
+        assert_eq!(super::Weights::compute(&lights::A, &uneven, Interpolation::Cubic).step(), None);
+    }
+}
