@@ -33,22 +33,21 @@ pub fn rules_table(out: &mut impl Write, surfaces: &str, rows: &[RuleRow], ms: &
 
 /// A Markdown table of what each light needs at each depth.
 pub fn depth_table(out: &mut impl Write, rows: &[DepthRow], budget: f64) -> io::Result<()> {
-    let count = |c: Option<usize>| c.map_or_else(|| "> 64".to_string(), |c| c.to_string());
     writeln!(
         out,
         "| light | depth | centre, stable M | box, stable M | fitted, stable M | hero jitter, n (RMS < {budget}) |"
     )?;
     writeln!(out, "|---|---:|---:|---:|---:|---:|")?;
     for r in rows {
-        let hero = r.hero.map_or_else(|| "> 4096".to_string(), |n| n.to_string());
+        let hero = hero_n(r.hero);
         writeln!(
             out,
             "| {} | {} | {} | {} | {} | {hero} |",
             r.light,
             r.depth,
-            count(r.center),
-            count(r.boxed),
-            count(r.fitted)
+            stable_m(r.center),
+            stable_m(r.boxed),
+            stable_m(r.fitted)
         )?;
     }
     Ok(())
@@ -63,22 +62,31 @@ pub fn needs_table(
     head: &str,
     label: impl Fn(&DepthRow) -> String,
 ) -> io::Result<()> {
-    let count = |c: Option<usize>| c.map_or_else(|| "> 64".to_string(), |c| c.to_string());
     writeln!(
         out,
         "| {head} | fitted, stable M | box, stable M | centre, stable M | hero jitter, n (RMS < {budget}) |"
     )?;
     writeln!(out, "|---|---:|---:|---:|---:|")?;
     for r in rows {
-        let hero = r.hero.map_or_else(|| "> 4096".to_string(), |n| n.to_string());
+        let hero = hero_n(r.hero);
         writeln!(
             out,
             "| {} | {} | {} | {} | {hero} |",
             label(r),
-            count(r.fitted),
-            count(r.boxed),
-            count(r.center)
+            stable_m(r.fitted),
+            stable_m(r.boxed),
+            stable_m(r.center)
         )?;
     }
     Ok(())
+}
+
+/// A stable bucket or fitted count, or "> 64" where none up to 64 is.
+fn stable_m(m: Option<usize>) -> String {
+    m.map_or_else(|| "> 64".to_string(), |m| m.to_string())
+}
+
+/// Hero's sample count, or "> 4096" where none up to 4096 is within budget.
+fn hero_n(n: Option<usize>) -> String {
+    n.map_or_else(|| "> 4096".to_string(), |n| n.to_string())
 }
