@@ -7,18 +7,16 @@
 //! cargo run --release --example compare -- --light-file lamp.csv --surface A1 --normalize luminance --white-balance
 //! ```
 
-mod common;
-
 use std::io;
 use std::process::ExitCode;
 
-use common::{fail, finish};
 use speclab::Role;
 use speclab::color::{Display, Exposure, GamutMap};
-use speclab::study::StudyError;
-use speclab::study::evaluate::scene::{Choice, Named};
-use speclab::study::experiments::compare::{self, CompareOptions};
-use speclab::study::present::report;
+use speclab_cli::args::{self, fail, finish};
+use speclab_cli::report;
+use speclab_study::StudyError;
+use speclab_study::evaluate::scene::{Choice, Named};
+use speclab_study::experiments::compare::{self, CompareOptions};
 
 const USAGE: &str = "\
 usage: compare [options]
@@ -60,19 +58,19 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("light-file") => a.light = Choice::File(parser.value()?.into()),
             Long("surface") => a.surface = Choice::Name(parser.value()?.string()?),
             Long("surface-file") => a.surface = Choice::File(parser.value()?.into()),
-            Long("n") => s.n = parser.value()?.parse_with(|v| common::count("samples", v))?,
-            Long("m") => s.m = parser.value()?.parse_with(common::buckets)?,
-            Long("k") => s.k = parser.value()?.parse_with(common::hero_width)?,
+            Long("n") => s.n = parser.value()?.parse_with(|v| args::count("samples", v))?,
+            Long("m") => s.m = parser.value()?.parse_with(args::buckets)?,
+            Long("k") => s.k = parser.value()?.parse_with(args::hero_width)?,
             Long("seed") => s.seed = parser.value()?.parse()?,
             Long("depth") => s.depth = parser.value()?.parse()?,
-            Long("trials") => s.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
+            Long("trials") => s.trials = parser.value()?.parse_with(|v| args::count("trials", v))?,
             Long("normalize") => s.viewing.normalize = parser.value()?.parse()?,
             Long("white-balance") => s.viewing.white_balance = true,
             Long("pdf") => s.sampling.pdf = parser.value()?.parse()?,
             Long("strata") => s.sampling.strata = parser.value()?.parse()?,
             Long("gamut") => a.gamut = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}\n{}", common::names_help());
+                println!("{USAGE}\n{}", args::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),
@@ -97,7 +95,7 @@ fn main() -> ExitCode {
     match run(&args) {
         Ok((light, surface, lines)) => {
             let white = args.settings.viewing.white(&light.spectrum);
-            let swatches = common::color().then(|| Display::new(Exposure::fit_white(white), args.gamut));
+            let swatches = args::color().then(|| Display::new(Exposure::fit_white(white), args.gamut));
             let out = &mut io::stdout().lock();
             let written =
                 report::compare_table(out, &light.name, &surface.name, &args.settings, &lines, swatches);

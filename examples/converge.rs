@@ -8,19 +8,18 @@
 //! cargo run --release --example converge -- --all --summary    # the README's table
 //! ```
 
-mod common;
-
 use std::io;
 use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
-use common::{fail, finish};
 use speclab::Role;
 use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::strata::Strata;
-use speclab::study::StudyError;
-use speclab::study::evaluate::scene::{self, Choice, Depth};
-use speclab::study::{experiments::convergence, present::report};
+use speclab_cli::args::{self, fail, finish};
+use speclab_cli::report;
+use speclab_study::StudyError;
+use speclab_study::evaluate::scene::{self, Choice, Depth};
+use speclab_study::experiments::convergence;
 
 const USAGE: &str = "\
 usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--depth D] [--all] [--csv] [--summary]
@@ -72,7 +71,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("surface") => a.surface = Choice::Name(parser.value()?.string()?),
             Long("light-file") => a.light = Choice::File(parser.value()?.into()),
             Long("surface-file") => a.surface = Choice::File(parser.value()?.into()),
-            Long("trials") => a.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
+            Long("trials") => a.trials = parser.value()?.parse_with(|v| args::count("trials", v))?,
             Long("seed") => a.seed = parser.value()?.parse()?,
             Long("depth") => a.depth = parser.value()?.parse()?,
             Long("all") => a.all = true,
@@ -95,7 +94,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
                 });
             }
             Short('h') | Long("help") => {
-                println!("{USAGE}\n{}", common::names_help());
+                println!("{USAGE}\n{}", args::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),

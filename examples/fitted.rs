@@ -11,16 +11,15 @@
 //! cargo run --release --example fitted -- --section lights
 //! ```
 
-mod common;
-
 use std::io::{self, Write};
 use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
-use common::{fail, finish};
 use speclab::Role;
-use speclab::study::evaluate::scene::{self, Choice, Depth, Named};
-use speclab::study::{StudyError, evaluate::shapes, experiments::rules, present::report};
+use speclab_cli::args::{self, fail, finish};
+use speclab_cli::{progress, report};
+use speclab_study::evaluate::scene::{self, Choice, Depth, Named};
+use speclab_study::{StudyError, evaluate::shapes, experiments::rules};
 
 const USAGE: &str = "\
 usage: fitted [--light NAME|all] [--section by-m|shapes|depth|lights|all] [--budget B] [--trials T] [--seed S]
@@ -75,10 +74,10 @@ fn parse_args() -> Result<Args, lexopt::Error> {
                     return Err(StudyError::Budget { value: a.budget }.to_string().into());
                 }
             }
-            Long("trials") => a.trials = parser.value()?.parse_with(|v| common::count("trials", v))?,
+            Long("trials") => a.trials = parser.value()?.parse_with(|v| args::count("trials", v))?,
             Long("seed") => a.seed = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}\n{}", common::names_help());
+                println!("{USAGE}\n{}", args::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),
@@ -129,7 +128,15 @@ fn run(args: &Args, out: &mut impl Write) -> Result<(), Box<dyn std::error::Erro
             "## Paths of depth 1 to 4 (light × patch^depth): what stays within ΔE00 {}\n",
             args.budget
         )?;
-        let rows = rules::depth_table(&lights, &patches, args.budget, args.trials, args.seed)?;
+        let bar = progress::bar("depths", (lights.len() * Depth::ALL.len()) as u64);
+        let mut rows = Vec::new();
+        for light in &lights {
+            for depth in Depth::ALL {
+                rows.push(rules::needs(light, &patches, depth, args.budget, args.trials, args.seed)?);
+                bar.inc(1);
+            }
+        }
+        bar.finish_and_clear();
         report::depth_table(out, &rows, args.budget)?;
     }
     Ok(())
@@ -141,10 +148,13 @@ fn by_light(args: &Args, out: &mut impl Write) -> Result<(), Box<dyn std::error:
     let (budget, trials, seed) = (args.budget, args.trials, args.seed);
     writeln!(out, "## Every built-in light: what keeps the six patches within ΔE00 {budget}\n")?;
     let patches = scene::builtin_surfaces();
-    let mut rows = Vec::new();
-    for light in lights(&args.lights, true)? {
+    let (every, mut rows) = (lights(&args.lights, true)?, Vec::new());
+    let bar = progress::bar("lights", every.len() as u64);
+    for light in every {
         rows.push(rules::needs(&light, &patches, Depth::ONE, budget, trials, seed)?);
+        bar.inc(1);
     }
+    bar.finish_and_clear();
     report::needs_table(out, &rows, budget, "light", |r| r.light.clone())?;
     writeln!(out, "\n## Metals: what keeps gold and copper (normal incidence) within ΔE00 {budget}\n")?;
     let metals = ["Au", "Cu"].map(|m| Choice::Name(m.into()).resolve(Role::Reflectance));

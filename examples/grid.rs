@@ -9,20 +9,19 @@
 //! cargo run --release --example grid -- --m 10 --depth 3
 //! ```
 
-mod common;
-
 use std::io;
 use std::process::ExitCode;
 
-use common::{fail, finish};
 use speclab::Role;
 use speclab::color::GamutMap;
-use speclab::study::StudyError;
-use speclab::study::evaluate::scene::{Choice, Named};
-use speclab::study::evaluate::viewing::Viewing;
-use speclab::study::experiments::grid::GridOptions;
-use speclab::study::experiments::texture::{self, TextureOptions};
-use speclab::study::present::report;
+use speclab::data::{Light, patches};
+use speclab_cli::args::{self, fail, finish};
+use speclab_cli::report;
+use speclab_study::StudyError;
+use speclab_study::evaluate::scene::{Choice, Named};
+use speclab_study::evaluate::viewing::Viewing;
+use speclab_study::experiments::grid::GridOptions;
+use speclab_study::experiments::texture::{self, TextureOptions};
 
 const USAGE: &str = "\
 usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture]
@@ -64,13 +63,13 @@ struct Args {
 
 fn parse_args() -> Result<Args, lexopt::Error> {
     use lexopt::prelude::*;
-    let names = |names: &[&str]| names.iter().map(|n| Choice::Name(n.to_string())).collect();
+    let names = |names: &mut dyn Iterator<Item = &str>| names.map(|n| Choice::Name(n.to_string())).collect();
     let mut args = Args {
         grid: GridOptions::default(),
         csv: false,
         texture: false,
-        lights: names(&["A", "D65", "F11"]),
-        surfaces: names(&["E2", "F4", "G4", "H4", "J4", "A1"]),
+        lights: names(&mut Light::APPENDIX.iter().map(|l| l.name())),
+        surfaces: names(&mut patches::NAMES.into_iter()),
         viewing: Viewing::default(),
         gamut: GamutMap::default(),
     };
@@ -78,8 +77,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
-            Long("n") => args.grid.n = parser.value()?.parse_with(|v| common::count("samples", v))?,
-            Long("m") => args.grid.m = parser.value()?.parse_with(common::buckets)?,
+            Long("n") => args.grid.n = parser.value()?.parse_with(|v| args::count("samples", v))?,
+            Long("m") => args.grid.m = parser.value()?.parse_with(args::buckets)?,
             Long("seed") => args.grid.seed = parser.value()?.parse()?,
             Long("depth") => args.grid.depth = parser.value()?.parse()?,
             Long("csv") => args.csv = true,
@@ -102,7 +101,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("strata") => args.grid.sampling.strata = parser.value()?.parse()?,
             Long("gamut") => args.gamut = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}\n{}", common::names_help());
+                println!("{USAGE}\n{}", args::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),
@@ -156,7 +155,7 @@ fn main() -> ExitCode {
     let written = if args.csv {
         report::grid_csv(out, &rows, &args.viewing)
     } else {
-        let swatches = common::color().then_some(args.gamut);
+        let swatches = args::color().then_some(args.gamut);
         report::grid_table(out, &args.grid, &args.viewing, &rows, swatches)
     };
     finish("grid", written)

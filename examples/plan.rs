@@ -8,17 +8,15 @@
 //! cargo run --release --example plan -- --light-file examples/build-data/data/led.csv --surface A1 --surface-file examples/build-data/data/leaf.json
 //! ```
 
-mod common;
-
 use std::io;
 use std::process::ExitCode;
 
-use common::{fail, finish};
 use speclab::Role;
-use speclab::study::StudyError;
-use speclab::study::evaluate::scene::{self, Choice, Named};
-use speclab::study::planning::plan::{self, Request};
-use speclab::study::present::report;
+use speclab_cli::args::{self, fail, finish};
+use speclab_cli::report;
+use speclab_study::StudyError;
+use speclab_study::evaluate::scene::{self, Choice, Named};
+use speclab_study::planning::plan::{self, Request};
 
 const USAGE: &str = "\
 usage: plan --light NAME|all ... --surface NAME|all ... [--budget B] [--unbiased] [--depth D]
@@ -63,12 +61,12 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("budget") => args.request.budget = parser.value()?.parse()?,
             Long("unbiased") => args.request.allow_bias = false,
             Long("trials") => {
-                args.request.trials = parser.value()?.parse_with(|v| common::count("trials", v))?
+                args.request.trials = parser.value()?.parse_with(|v| args::count("trials", v))?
             }
             Long("seed") => args.request.seed = parser.value()?.parse()?,
             Long("depth") => args.request.depth = parser.value()?.parse()?,
             Short('h') | Long("help") => {
-                println!("{USAGE}\n{}", common::names_help());
+                println!("{USAGE}\n{}", args::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected()),

@@ -15,16 +15,13 @@
 //! cargo run --release --example swatches -- --n 64 --m 32 --white-balance --gamut clip --out sheet.png
 //! ```
 
-mod common;
-#[path = "common/png.rs"]
-mod png_file;
-
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use common::fail;
-use speclab::study::present::swatches::{self, SwatchOptions};
-use speclab::study::{evaluate::scene, present::sheet};
+use speclab_cli::args::{self, fail};
+use speclab_cli::{png, sheet};
+use speclab_study::evaluate::scene;
+use speclab_study::experiments::swatches::{self, SwatchOptions};
 
 const USAGE: &str = "\
 usage: swatches [--n N] [--m M] [--seed S] [--white-balance] [--gamut clip|chroma] [--out PATH]
@@ -48,8 +45,8 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
-            Long("n") => s.n = parser.value()?.parse_with(|v| common::count("samples", v))?,
-            Long("m") => s.m = parser.value()?.parse_with(common::buckets)?,
+            Long("n") => s.n = parser.value()?.parse_with(|v| args::count("samples", v))?,
+            Long("m") => s.m = parser.value()?.parse_with(args::buckets)?,
             Long("seed") => s.seed = parser.value()?.parse()?,
             Long("white-balance") => s.white_balance = true,
             Long("gamut") => s.gamut = parser.value()?.parse()?,
@@ -75,9 +72,8 @@ fn main() -> ExitCode {
         Err(e) => return fail("swatches", e),
     };
     let layout = sheet::Layout::new(&swatches);
-    let image =
-        png_file::Image { width: layout.width(), height: layout.height(), rgb: sheet::draw(&swatches) };
-    match png_file::write_file(&args.out, &image) {
+    let image = png::Image { width: layout.width(), height: layout.height(), rgb: sheet::draw(&swatches) };
+    match png::write_file(&args.out, &image) {
         Ok(()) => {
             eprintln!("swatches: wrote {} ({} × {} pixels)", args.out.display(), image.width, image.height);
             ExitCode::SUCCESS

@@ -5,9 +5,9 @@
 //! path or `<string>`), line and column ([`ParseError`], with its
 //! [`Position`] and [`ParseErrorKind`]); errors in in-memory samples carry
 //! the index and the field ([`SampleError`]); other variants carry the
-//! values that were out of range. Text positions and kinds are
-//! `speclab_tables`' own, re-exported here: build scripts and run-time
-//! loading report the same errors.
+//! values that were out of range. Text positions, kinds and read failures
+//! are `speclab_tables`' own errors, carried as they are and re-exported
+//! here: build scripts and run-time loading report the same errors.
 //!
 //! ```
 //! use speclab::{io::Load, Role, TabulatedSpectrum};
@@ -18,7 +18,6 @@
 //! ```
 
 use std::fmt;
-use std::path::PathBuf;
 
 pub use speclab_tables::error::{ParseError, ParseErrorKind, Position, ReadError};
 pub use speclab_tables::validate::{Field, Invalid, SampleError};
@@ -31,20 +30,9 @@ pub enum Error {
     Parse(ParseError),
     /// In-memory samples that do not form a valid spectrum, located by index.
     Sample(SampleError),
-    /// A file or stream that could not be read.
-    Io {
-        /// The file (or the stream's name).
-        path: PathBuf,
-        /// Why.
-        source: std::io::Error,
-    },
-    /// A file or stream larger than the reading limit.
-    TooLarge {
-        /// The file or stream.
-        origin: String,
-        /// The limit, bytes.
-        limit: u64,
-    },
+    /// A file or stream that could not be read, or is larger than the
+    /// reading limit ([`ReadError`]: the file and why).
+    Read(ReadError),
     /// A scale factor that is not finite and positive (for example the
     /// normalisation of a light with no power in the range).
     Scale {
@@ -123,10 +111,7 @@ impl fmt::Display for Error {
         match self {
             Error::Parse(e) => e.fmt(f),
             Error::Sample(e) => e.fmt(f),
-            Error::Io { path, source } => write!(f, "{}: cannot read: {source}", path.display()),
-            Error::TooLarge { origin, limit } => {
-                write!(f, "{origin}: expected at most {limit} bytes ({} MiB), found more", limit >> 20)
-            }
+            Error::Read(e) => e.fmt(f),
             Error::Scale { factor } => write!(f, "expected a finite positive scale factor, found {factor}"),
             Error::SampleWavelength { index, lambda, pdf } => write!(
                 f,
@@ -219,7 +204,7 @@ impl std::error::Error for Error {
         match self {
             Error::Parse(e) => Some(e),
             Error::Sample(e) => Some(e),
-            Error::Io { source, .. } => Some(source),
+            Error::Read(e) => Some(e),
             _ => None,
         }
     }
@@ -239,9 +224,6 @@ impl From<SampleError> for Error {
 
 impl From<ReadError> for Error {
     fn from(e: ReadError) -> Self {
-        match e {
-            ReadError::Io { path, source } => Error::Io { path, source },
-            ReadError::TooLarge { origin, limit } => Error::TooLarge { origin, limit },
-        }
+        Error::Read(e)
     }
 }

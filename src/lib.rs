@@ -15,15 +15,13 @@
 //!   turned into [`Xyz`] and [`LinearSrgb`] ([`color`]).
 //!
 //! Floors, each using only those below it: [`error`] and [`spectrum`] →
-//! [`color`] → [`sampling`] → [`io`] → `study` (`ARCHITECTURE.md`;
-//! `tests/floors.rs` checks the `use` lines). Spectra are read by [`io`] at
-//! run time, or turned into static data at compile time by the
-//! `speclab-tables` crate (the built-in data, [`data`], is made so). The
-//! accuracy study (`speclab::study`: trials, ΔE00, the comparison grid) is behind
-//! the default feature `study`; a renderer can leave it out with
-//! `default-features = false`, which leaves `rand` (re-exported as
-//! [`rand`], the version the API names) and `speclab-tables` as the only
-//! dependencies.
+//! [`color`] → [`sampling`] → [`io`] and [`carry`] (`ARCHITECTURE.md`).
+//! Spectra are read by [`io`] at run time, or turned into static data at
+//! compile time by the `speclab-tables` crate (the built-in data, [`data`],
+//! is made so). This crate is the renderer's core: its dependencies are
+//! [`rand`] (re-exported, the version the API names) and `speclab-tables`.
+//! The accuracy study (trials, the comparison grid, charts and plans) is
+//! the crate `speclab-study`, and what its programs show is `speclab-cli`.
 //!
 //! A renderer's inner loop, per sample (values in `f64`, the default):
 //!
@@ -53,9 +51,9 @@
 //! ```
 //! use speclab::{data::{lights, patches}, sampling::reference, HeroSample, SampledSpectrum, Xyz};
 //! use speclab::spectrum::{DenseObserver, DenseSpectrum};
-//! let light = DenseSpectrum::<f32>::new(&lights::F11); // once per scene
-//! let walls = [&patches::G4, &patches::A1].map(DenseSpectrum::<f32>::new);
-//! let observer = DenseObserver::<f32>::new();
+//! let light = DenseSpectrum::new(&lights::F11); // once per scene
+//! let walls = [&patches::G4, &patches::A1].map(DenseSpectrum::new);
+//! let observer = DenseObserver::new();
 //! let mut pixel = Xyz::ZERO;
 //! for i in 0..1024_u16 {
 //!     let u = (f32::from(i) + 0.5) / 1024.0; // the renderer's own number
@@ -82,16 +80,58 @@
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+/// The Rust blocks of every page of `docs/`, compiled and run.
+#[cfg(doctest)]
+mod doc_pages {
+    #[doc = include_str!("../docs/accuracy.md")]
+    pub struct Accuracy;
+    #[doc = include_str!("../docs/chart-and-plans.md")]
+    pub struct ChartAndPlans;
+    #[doc = include_str!("../docs/convergence.md")]
+    pub struct Convergence;
+    #[doc = include_str!("../docs/fitted.md")]
+    pub struct Fitted;
+    #[doc = include_str!("../docs/grid.md")]
+    pub struct Grid;
+    #[doc = include_str!("../docs/library.md")]
+    pub struct Library;
+    #[doc = include_str!("../docs/named-data.md")]
+    pub struct NamedData;
+    #[doc = include_str!("../docs/render.md")]
+    pub struct Render;
+    #[doc = include_str!("../docs/speed.md")]
+    pub struct Speed;
+    #[doc = include_str!("../docs/textures.md")]
+    pub struct Textures;
+}
+
+pub mod carry;
 pub mod color;
 pub mod error;
-#[doc(hidden)]
-pub mod fuzzing;
 pub mod io;
 mod names;
 pub mod sampling;
 pub mod spectrum;
-#[cfg(feature = "study")]
-pub mod study;
+
+/// What `speclab_tables::Codegen` writes calls: not part of the API, and
+/// not covered by semantic versioning.
+#[doc(hidden)]
+pub mod __codegen {
+    pub use crate::spectrum::Tables;
+    use crate::spectrum::{Interpolation, Role, TabulatedSpectrum};
+
+    /// A spectrum over generated static tables (`None` if they do not fit
+    /// together).
+    #[must_use]
+    pub const fn tabulated(role: Role, interpolation: Interpolation, t: Tables) -> Option<TabulatedSpectrum> {
+        TabulatedSpectrum::from_static(role, interpolation, t)
+    }
+}
+
+#[allow(deprecated)]
+pub use sampling::Centre;
+#[allow(deprecated)]
+pub use spectrum::WIDTH;
 
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;

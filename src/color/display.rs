@@ -54,7 +54,7 @@
 
 use crate::color::srgb::{self, LinearSrgb, SRGB_TO_XYZ};
 use crate::color::xyz::Xyz;
-use crate::names::named_choices;
+use crate::named_choices;
 
 /// A positive factor that linear colours are multiplied by before display.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -120,9 +120,6 @@ pub enum GamutMap {
 named_choices!(GamutMap, "a gamut map": Clip => "clip", Chroma => "chroma");
 
 impl GamutMap {
-    /// Both, in CLI order.
-    pub const ALL: [GamutMap; 2] = [GamutMap::Clip, GamutMap::Chroma];
-
     /// `rgb` mapped into [0, 1]³.
     #[inline]
     #[must_use]

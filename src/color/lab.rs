@@ -3,7 +3,7 @@
 //!
 //! The white is the XYZ of the perfect white under the light (or the
 //! colour space's white), so Lab does not depend on the light's arbitrary
-//! scale. ΔE00 (CIEDE2000) is in the study (`study::perceptual`).
+//! scale. ΔE00 (CIEDE2000) is in [`super::difference`].
 //!
 //! ```
 //! use speclab::{Xyz, color::lab::lab};

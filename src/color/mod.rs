@@ -12,7 +12,8 @@
 //!   mapping (clip, or keep hue and luminance), encoding, 8 bits; linear
 //!   and encoded sRGB as different types.
 //! - [`adaptation`]: Bradford chromatic adaptation between whites.
-//! - [`lab`]: CIELAB relative to a white (ΔE00 is the study's).
+//! - [`lab`]: CIELAB relative to a white; [`difference`]: CIEDE2000
+//!   (ΔE00) between two colours.
 //! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`] ([`rgb_spectra`]):
 //!   an RGB colour as a spectrum, fitted in CIELAB by [`upsample`], or
 //!   looked up in [`rgb_table`].
@@ -30,6 +31,7 @@
 //! ```
 
 pub mod adaptation;
+pub mod difference;
 pub mod display;
 pub mod lab;
 pub mod matrix;

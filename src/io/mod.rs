@@ -1,26 +1,23 @@
 //! Reading spectra that users measured or downloaded.
 //!
-//! Three formats, told apart by content (not by file name):
-//! - the assignment's brace notation, `{380, 0.04}, {385, 0.05}, ...`
-//!   ([`brace`]);
-//! - JSON, `{"wavelengths": [...], "values": [...]}` ([`json`]);
+//! Three formats ([`Format`]), told apart by content (not by file name):
+//! - the assignment's brace notation, `{380, 0.04}, {385, 0.05}, ...`;
+//! - JSON, `{"wavelengths": [...], "values": [...]}`;
 //! - two-column text: CSV, TSV or whitespace, with `#` comments and an
-//!   optional header ([`columns`]).
+//!   optional header.
 //!
-//! [`text`] is the toolkit they share and [`read`] the one route from bytes
-//! to validated samples. All five live in the std-only `speclab-tables`
-//! crate (re-exported here), so that build scripts read files exactly as
-//! [`Load`] does. **A new input format** is a file beside
-//! `tables/src/brace.rs` that turns text into [`text::Samples`], plus a
-//! variant of [`read::Format`] (and a rule in `Format::detect`);
-//! validation, positions in errors and the range check come for free.
+//! The parsers live in the std-only `speclab-tables` crate, so that build
+//! scripts read files exactly as [`Load`] does. **A new input format** is
+//! a parser there (`tables/src/brace.rs` is one), plus a variant of
+//! [`Format`] (and a rule in `Format::detect`); validation, positions in
+//! errors and the range check come for free.
 //!
 //! Samples are validated for their [`Role`] (see
 //! [`crate::spectrum::validate`]), and a loaded spectrum **must cover the
 //! integration range** 380–730 nm: a lamp file that stops at 700 nm is an
 //! error, not a silently darker colour. (A spectrum built in code with
 //! [`TabulatedSpectrum::new`] is instead zero outside its samples.) Files
-//! and streams larger than [`read::MAX_BYTES`] are refused, and so is a
+//! and streams larger than [`MAX_BYTES`] are refused, and so is a
 //! light with no power in the range. Every error names the source, line and
 //! column.
 //!
@@ -37,8 +34,20 @@
 
 use std::path::Path;
 
-pub use speclab_tables::read::Format;
-pub use speclab_tables::{brace, columns, json, read, text};
+pub use speclab_tables::read::{Format, MAX_BYTES};
+
+/// The parsers and the reading route, re-exported from `speclab-tables`
+/// until this release: depend on that crate for them.
+macro_rules! moved_to_tables {
+    ($($module:ident),*) => {$(
+        #[doc = concat!("`speclab_tables::", stringify!($module), "`: moved.")]
+        #[deprecated(since = "0.2.0", note = "depend on `speclab-tables` and use its modules")]
+        pub mod $module {
+            pub use speclab_tables::$module::*;
+        }
+    )*};
+}
+moved_to_tables!(brace, columns, json, read, text);
 
 use crate::error::Error;
 use crate::spectrum::{Interpolation, Role, TabulatedSpectrum};
@@ -76,19 +85,19 @@ impl Load {
 
     /// A spectrum from `text`; `origin` names it in errors.
     pub fn text(&self, text: &str, origin: &str) -> Result<TabulatedSpectrum, Error> {
-        let s = read::samples(text, origin, self.role, self.interpolation, self.format)?;
+        let s = speclab_tables::read::samples(text, origin, self.role, self.interpolation, self.format)?;
         Ok(TabulatedSpectrum::from_validated(s.lambda, s.values, self.role, self.interpolation))
     }
 
-    /// A spectrum from the file at `path` (at most [`read::MAX_BYTES`]).
+    /// A spectrum from the file at `path` (at most [`MAX_BYTES`]).
     pub fn file(&self, path: impl AsRef<Path>) -> Result<TabulatedSpectrum, Error> {
         let path = path.as_ref();
-        self.text(&read::file(path)?, &path.display().to_string())
+        self.text(&speclab_tables::read::file(path)?, &path.display().to_string())
     }
 
-    /// A spectrum from a stream (at most [`read::MAX_BYTES`]); `origin`
+    /// A spectrum from a stream (at most [`MAX_BYTES`]); `origin`
     /// names it in errors.
     pub fn reader(&self, reader: impl std::io::Read, origin: &str) -> Result<TabulatedSpectrum, Error> {
-        self.text(&read::text(reader, origin, read::MAX_BYTES)?, origin)
+        self.text(&speclab_tables::read::text(reader, origin, MAX_BYTES)?, origin)
     }
 }

@@ -27,7 +27,7 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use crate::names::named_choices;
+use crate::named_choices;
 use crate::spectrum::data::{
     CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,
     CIE_Z_COEFFS, CIE_Z_LAMBDA,
@@ -61,9 +61,6 @@ pub(crate) const fn center(i: usize, m: usize) -> f64 {
 const CMF_BOUNDS: [f64; 2] = Role::Observer.bounds();
 
 impl BucketRule {
-    /// Both rules.
-    pub const ALL: [BucketRule; 2] = [BucketRule::Center, BucketRule::BoxAverage];
-
     /// `[x̄ᵢ, ȳᵢ, z̄ᵢ]` of bucket `i` of `m` under this rule: the matching
     /// functions at the center, or their exact means over the bucket (a
     /// bucket's weights are these times its width `W/M`). A `const fn`, so

@@ -22,7 +22,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use crate::error::Error;
-use crate::names::named_choices;
+use crate::named_choices;
 use crate::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 use crate::sampling::strata::Strata;
 use crate::spectrum::Spectrum;
@@ -44,29 +44,21 @@ pub enum PdfKind {
 named_choices!(PdfKind, "a pdf": Uniform => "uniform", Visible => "visible", Light => "light", Balanced => "balanced");
 
 impl PdfKind {
-    /// All choices, in the order of their names.
-    pub const ALL: [PdfKind; 4] = [PdfKind::Uniform, PdfKind::Visible, PdfKind::Light, PdfKind::Balanced];
-
     /// True for the densities that follow a light (tabulated for it).
     #[must_use]
     pub fn follows_light(self) -> bool {
         matches!(self, PdfKind::Light | PdfKind::Balanced)
     }
 
-    /// This density for `light`: the two that follow it are tabulated (about
-    /// 7 µs) and kept by the light if it has a
-    /// [`Cache`](crate::spectrum::Cache); an [`Error::NoMass`] for a light
-    /// the observer cannot see.
+    /// This density for `light`: the two that follow it are tabulated now
+    /// (about 7 µs; keep the result, a cheap clone, as long as the light);
+    /// an [`Error::NoMass`] for a light the observer cannot see.
     pub fn for_light(self, light: &(impl Spectrum + ?Sized)) -> Result<ChosenPdf, Error> {
-        let table = |key: u64, make: fn(&dyn Spectrum) -> Result<LightPdf, Error>| match light.cache() {
-            Some(cache) => cache.derived(key, || make(&light)),
-            None => make(&light).map(Arc::new),
-        };
         Ok(match self {
             PdfKind::Uniform => ChosenPdf::Uniform,
             PdfKind::Visible => ChosenPdf::Visible,
-            PdfKind::Light => ChosenPdf::Table(table(1, |l| LightPdf::light(&l))?),
-            PdfKind::Balanced => ChosenPdf::Table(table(2, |l| LightPdf::balanced(&l))?),
+            PdfKind::Light => ChosenPdf::Table(Arc::new(LightPdf::light(&light)?)),
+            PdfKind::Balanced => ChosenPdf::Table(Arc::new(LightPdf::balanced(&light)?)),
         })
     }
 }
@@ -79,8 +71,8 @@ pub enum ChosenPdf {
     Uniform,
     /// [`Visible`].
     Visible,
-    /// A density tabulated for a light ([`LightPdf`]), shared with the
-    /// light that keeps it.
+    /// A density tabulated for a light ([`LightPdf`]), shared by its
+    /// clones.
     Table(Arc<LightPdf>),
 }
 

@@ -12,14 +12,15 @@
 //!   ([`BoxAverage`]); [`buckets`]: the two rules.
 //! - [`rule::Rule`]: M wavelengths and weights chosen at run time, buckets
 //!   or [`fitted`] to a scene's lights over a reflectance prior
-//!   ([`prior`]); a renderer takes it as a `SampledWavelengths<M, T>`.
+//!   (`prior.rs`); a renderer takes it as a `SampledWavelengths<M, T>`.
 //! - [`pdf`]: wavelength densities (uniform, visible, following a light)
 //!   behind the [`pdf::WavelengthPdf`] trait, and [`binned`]: any of them
 //!   as equal-probability bins, sampled without a search; [`strata`]: how
 //!   the primary numbers of an estimate are spread (none, jittered,
-//!   Kronecker).
+//!   Kronecker); [`seed`]: the one seeding helper (SplitMix64).
 //! - [`mod@reference`]: the exact integral, which the estimates are judged by;
-//!   [`PreparedLight`]: the same as a dot product, for many reflectances.
+//!   [`PreparedLight`]: the same as a dot product, for many reflectances;
+//!   [`variance`]: the exact variance of one random or hero sample.
 //!
 //! One estimator serves all: XYZ ≈ Σ c̄(λ)·value(λ) / pdf(λ), averaged. A
 //! strategy only chooses the wavelengths and their pdf. **A new wavelength
@@ -77,14 +78,24 @@ mod light_pdf;
 mod paths;
 pub mod pdf;
 mod prepared;
-pub mod prior;
+pub(crate) mod prior;
 pub mod reference;
 pub mod regular;
 pub mod rule;
+pub mod seed;
 pub mod strata;
+pub mod variance;
 mod wavelengths;
 
 pub use hero::HeroSample;
 pub use prepared::PreparedLight;
 pub use regular::{BoxAverage, Center, RegularSpectrum};
 pub use wavelengths::{Emission, SampledWavelengths};
+
+/// Centre buckets: renamed.
+#[deprecated(since = "0.2.0", note = "use `Center`")]
+pub type Centre = Center;
+
+/// A spectrum's values at K wavelengths: moved to the spectrum floor.
+#[deprecated(since = "0.2.0", note = "use `speclab::SampledSpectrum` (or `spectrum::SampledSpectrum`)")]
+pub type SampledSpectrum<const K: usize, T = f64> = crate::spectrum::SampledSpectrum<K, T>;

@@ -79,6 +79,36 @@ pub trait WavelengthPdf {
     }
 }
 
+/// A reference or a box to a density is the density (a renderer holds
+/// mixed densities as `&dyn WavelengthPdf` or `Box<dyn WavelengthPdf>`).
+macro_rules! forward_pdf {
+    ($($pointer:ty),*) => {$(
+        impl<P: WavelengthPdf + ?Sized> WavelengthPdf for $pointer {
+            #[inline]
+            fn sample(&self, u: f64) -> f64 {
+                (**self).sample(u)
+            }
+            #[inline]
+            fn pdf(&self, lambda: f64) -> f64 {
+                (**self).pdf(lambda)
+            }
+            fn cdf(&self, lambda: f64) -> Option<f64> {
+                (**self).cdf(lambda)
+            }
+            #[inline]
+            fn inv_pdf(&self, lambda: f64) -> f64 {
+                (**self).inv_pdf(lambda)
+            }
+            #[inline]
+            fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
+                (**self).sample_with_inv_pdf(u)
+            }
+        }
+    )*};
+}
+
+forward_pdf!(&P, Box<P>);
+
 /// `1/p`, or 0 where `p` is 0 or its reciprocal overflows.
 #[inline]
 fn reciprocal(p: f64) -> f64 {

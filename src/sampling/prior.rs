@@ -16,18 +16,12 @@
 //!
 //! Every member lies strictly inside (0, 1) and is smooth. None is one of
 //! the six appendix patches or of the named test shapes the study judges
-//! rules on (`study::shapes`): those are tables, these are formulas.
-//!
-//! ```
-//! use speclab::sampling::prior::{prior, PRIOR_SIZE};
-//! use speclab::Spectrum;
-//! let p = prior();
-//! assert_eq!(p.len(), PRIOR_SIZE);
-//! assert!(p.iter().all(|r| (0.0..1.0).contains(&r.eval(555.0))));
-//! ```
+//! rules on (`speclab_study::evaluate::shapes`): those are tables, these
+//! are formulas (tested below).
 
 use std::sync::OnceLock;
 
+use crate::sampling::seed::SplitMix64;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, Spectrum};
 
 /// How many reflectances the prior holds.
@@ -64,18 +58,13 @@ impl Spectrum for PriorReflectance {
     }
 }
 
-/// SplitMix64: a small generator whose sequence is fixed by its seed.
-struct SplitMix(u64);
+/// The prior's generator: the crate's [`SplitMix64`], drawing in ranges.
+struct SplitMix(SplitMix64);
 
 impl SplitMix {
     /// A uniform number in `[lo, hi)`.
     fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        let u = (z ^ (z >> 31)) >> 11;
-        lo + (hi - lo) * (u as f64 / (1u64 << 53) as f64)
+        lo + (hi - lo) * self.0.next_f64()
     }
 }
 
@@ -105,7 +94,7 @@ fn draw(i: usize, rng: &mut SplitMix) -> PriorReflectance {
 pub fn prior() -> &'static [PriorReflectance] {
     static PRIOR: OnceLock<Vec<PriorReflectance>> = OnceLock::new();
     PRIOR.get_or_init(|| {
-        let mut rng = SplitMix(PRIOR_SEED);
+        let mut rng = SplitMix(SplitMix64::new(PRIOR_SEED));
         (0..PRIOR_SIZE).map(|i| draw(i, &mut rng)).collect()
     })
 }
@@ -144,7 +133,7 @@ impl Spectrum for PriorPath {
 pub fn paths() -> &'static [PriorPath] {
     static PATHS_: OnceLock<Vec<PriorPath>> = OnceLock::new();
     PATHS_.get_or_init(|| {
-        let mut rng = SplitMix(PRIOR_SEED.wrapping_add(1));
+        let mut rng = SplitMix(SplitMix64::new(PRIOR_SEED.wrapping_add(1)));
         let singles = (0..PRIOR_SIZE).map(|i| PriorPath { members: [i, 0, 0, 0], depth: 1 });
         let mut out: Vec<PriorPath> = singles.collect();
         for (depth, &count) in (2..).zip(&PATHS) {
@@ -180,7 +169,7 @@ mod tests {
         assert_eq!(p[0].bumps, [[0.0; 3]; 3]);
         assert!(p[1].bumps[0][0] != 0.0 && p[1].quadratic[1] == 0.0);
         let again: Vec<_> = {
-            let mut rng = SplitMix(PRIOR_SEED);
+            let mut rng = SplitMix(SplitMix64::new(PRIOR_SEED));
             (0..PRIOR_SIZE).map(|i| draw(i, &mut rng)).collect()
         };
         assert_eq!(p, &again[..]);

@@ -18,12 +18,10 @@
 //! For a renderer's paths, [`ExactPaths`] gives each path's exact colour
 //! as a sum over fixed nodes.
 //!
-//! **Speed**: for a tabulated light and surface (or any light with a
-//! cache and reflectance with samples), the light keeps exact
-//! weights for the surface's grid, computed on first use (about 20 µs),
-//! after which each XYZ is a dot product with the reflectance's samples
-//! ([`PreparedLight`]): about 50 ns for a patch. Built-in, cloned, scaled
-//! and loaded lights all do so.
+//! **Speed**: integration piece by piece takes a few microseconds for a
+//! patch. For many reflectances under one light, prepare the light once
+//! ([`PreparedLight`], about 20 µs): each XYZ is then a dot product with
+//! the reflectance's samples, about 50 ns for a patch, and as exact.
 //!
 //! ```
 //! use speclab::{data::{lights, patches}, sampling::reference};
@@ -38,27 +36,16 @@
 pub use crate::sampling::paths::ExactPaths;
 
 use crate::color::Xyz;
+#[cfg(doc)]
 use crate::sampling::PreparedLight;
-use crate::spectrum::{Role, Spectrum, integrate, weights};
+use crate::spectrum::{Spectrum, integrate};
 
-/// XYZ of `light × surface`. For a light that keeps a [`Cache`] (tables
-/// do) and a reflectance that interpolates samples
-/// ([`Spectrum::samples`]), a dot product with the light's weights for the
-/// surface's grid ([`PreparedLight`], kept by the light after the first
-/// call); otherwise integration piece by piece. Both exact for piecewise
-/// polynomials.
-///
-/// [`Cache`]: crate::spectrum::Cache
+/// XYZ of `light × surface`, integrated piece by piece: exact for
+/// piecewise polynomials. For many surfaces under one light,
+/// [`PreparedLight`] is faster.
 #[must_use]
-pub fn xyz(light: &impl Spectrum, surface: &impl Spectrum) -> Xyz {
-    if let Some(s) = surface.samples()
-        && s.role == Role::Reflectance
-        && let Some(weights) = weights::kept_for(light, s.lambda, s.interpolation)
-        && let Ok(xyz) = PreparedLight::borrowed(light, weights).xyz_samples(s.values)
-    {
-        return xyz;
-    }
-    xyz_of_product(&[light as &dyn Spectrum, surface])
+pub fn xyz(light: &(impl Spectrum + ?Sized), surface: &(impl Spectrum + ?Sized)) -> Xyz {
+    xyz_of_product(&[&light as &dyn Spectrum, &surface])
 }
 
 /// XYZ of the perfect white (reflectance 1 over 380–730 nm) under `light`.

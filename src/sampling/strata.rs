@@ -32,7 +32,7 @@
 
 use rand::{Rng, RngExt};
 
-use crate::names::named_choices;
+use crate::named_choices;
 
 /// How an estimate's primary numbers are spread.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -52,9 +52,6 @@ named_choices!(Strata, "a strata": None => "none", Jittered => "jitter", Kroneck
 const INV_PHI: f64 = 0.618_033_988_749_894_9;
 
 impl Strata {
-    /// All choices, in CLI order.
-    pub const ALL: [Strata; 3] = [Strata::None, Strata::Jittered, Strata::Kronecker];
-
     /// Primary number `i` of the `n` of one estimate made of samples of `k`
     /// wavelengths, from a uniform number `u` in `[0, 1)`:
     /// - `None`: `u` itself (a fresh `u` per sample);

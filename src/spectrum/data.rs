@@ -50,7 +50,6 @@ use std::fmt;
 use std::str::FromStr;
 
 use crate::error::Error;
-use crate::names::named_choices;
 use crate::spectrum::TabulatedSpectrum;
 
 mod generated {
@@ -69,8 +68,8 @@ pub mod lights {
     /// `D` and a temperature in kelvin for CIE daylight ([`daylight`]),
     /// e.g. `D5000`. An [`Error::UnknownName`] names the nearest names.
     pub fn named(name: &str) -> Result<std::borrow::Cow<'static, TabulatedSpectrum>, Error> {
-        if let Ok(light) = name.parse::<super::Light>() {
-            return Ok(std::borrow::Cow::Borrowed(light.spectrum()));
+        if let Some(light) = super::find(&ALL, name) {
+            return Ok(std::borrow::Cow::Borrowed(light));
         }
         let kelvin = name.strip_prefix(['D', 'd']).and_then(|t| t.parse::<f64>().ok());
         match kelvin {
@@ -109,23 +108,48 @@ pub mod lights {
     }
 }
 
-/// The six ColorChecker SG patches of the appendix (reflectance, 0–1).
+/// The six ColorChecker SG patches of the appendix (reflectance, 0–1), in
+/// Appendix 2's order, and the list of them.
 pub mod patches {
     pub use super::generated::patches::*;
+
+    use crate::error::Error;
+    use crate::spectrum::TabulatedSpectrum;
+
+    /// The patch named `name` (any case, [`NAMES`]).
+    pub fn named(name: &str) -> Result<&'static TabulatedSpectrum, Error> {
+        super::find(&ALL, name).ok_or_else(|| super::unknown("a built-in patch", &NAMES, name))
+    }
 }
 
 /// Conductors' complex refractive indices `η + i·k` (refractiveindex.info
 /// data; see `data/SOURCES.md`), and the list of them.
 pub mod conductors {
     pub use super::generated::conductors::*;
+
+    use crate::error::Error;
+    use crate::spectrum::Conductor;
+
+    /// The conductor named `name` (any case, [`NAMES`]).
+    pub fn named(name: &str) -> Result<&'static Conductor<'static>, Error> {
+        super::find(&ALL, name).ok_or_else(|| super::unknown("a built-in conductor", &NAMES, name))
+    }
 }
 
 /// Dielectrics' refractive indices: pbrt-v4's seven glasses, as the
 /// SCHOTT catalogue's Sellmeier formulas (pbrt-v4 calls them glass-BK7,
 /// -BAF10, -FK51A, -LASF9, -F5, -F10, -F11; the last three are N-SF5,
-/// N-SF10 and N-SF11).
+/// N-SF10 and N-SF11), and the list of them.
 pub mod glasses {
     pub use super::generated::glasses::*;
+
+    use crate::error::Error;
+    use crate::spectrum::Sellmeier;
+
+    /// The glass named `name` (any case, [`NAMES`]: `N-BK7`, …).
+    pub fn named(name: &str) -> Result<&'static Sellmeier, Error> {
+        super::find(&ALL, name).ok_or_else(|| super::unknown("a built-in glass", &NAMES, name))
+    }
 }
 
 /// The CIE daylight components S₀, S₁, S₂ (5 nm, 300–830 nm, linear).
@@ -144,59 +168,10 @@ pub(crate) use generated::cie1931::{
     CIE_Z_COEFFS, CIE_Z_LAMBDA,
 };
 
-/// A built-in light, by its place in [`lights::ALL`]: a `Copy` handle with
-/// a name and a static spectrum.
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Light(usize);
-
-impl Light {
-    /// CIE illuminant A as the assignment prints it.
-    pub const A: Light = Light(0);
-    /// CIE illuminant D65 as the assignment prints it.
-    pub const D65: Light = Light(1);
-    /// F11 as the assignment prints it (the CIE's FL11).
-    pub const F11: Light = Light(2);
-    /// The assignment's three lights, in the order of Appendix 2's columns.
-    pub const APPENDIX: [Light; 3] = [Light::A, Light::D65, Light::F11];
-
-    /// Every built-in light, in [`lights::ALL`]'s order.
-    pub fn all() -> impl Iterator<Item = Light> {
-        (0..lights::ALL.len()).map(Light)
-    }
-
-    /// The light's name, as on command lines (`A`, `CIE-D65`, `LED-B3`).
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        lights::ALL[self.0].0
-    }
-
-    /// The light's spectrum.
-    #[must_use]
-    pub fn spectrum(self) -> &'static TabulatedSpectrum {
-        lights::ALL[self.0].1
-    }
-}
-
-impl fmt::Display for Light {
-    /// The name used on command lines, in tables and in CSV.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl fmt::Debug for Light {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "Light({})", self.name())
-    }
-}
-
-impl FromStr for Light {
-    type Err = Error;
-    /// The built-in light of this name, in any case.
-    fn from_str(s: &str) -> Result<Self, Error> {
-        let found = lights::NAMES.iter().position(|n| n.eq_ignore_ascii_case(s));
-        found.map(Light).ok_or_else(|| unknown("a built-in light", &lights::NAMES, s))
-    }
+/// The entry of `list` named `name`, in any case: the one lookup by name
+/// of every built-in list.
+fn find<T: ?Sized>(list: &[(&str, &'static T)], name: &str) -> Option<&'static T> {
+    list.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)).map(|&(_, t)| t)
 }
 
 /// An [`Error::UnknownName`] for `found` among `names`.
@@ -204,52 +179,118 @@ fn unknown(what: &'static str, names: &'static [&'static str], found: &str) -> E
     Error::UnknownName { what, expected: names, found: found.to_string() }
 }
 
-/// The six ColorChecker SG patches of the appendix, by name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Patch {
-    /// E2, dark skin.
-    E2,
-    /// F4, green.
-    F4,
-    /// G4, red.
-    G4,
-    /// H4, yellow.
-    H4,
-    /// J4, cyan.
-    J4,
-    /// A1, white.
-    A1,
+/// A built-in spectrum by its place in a generated list: a `Copy` handle
+/// with a name and a static spectrum, one constant per name
+/// (`Light::F11`, `Patch::G4`), `ALL` in the list's order, parsed from
+/// its name in any case.
+macro_rules! handle {
+    ($ty:ident, $list:ident, $what:literal) => {
+        impl $ty {
+            /// The name, as on command lines (`A`, `CIE-D65`, `G4`).
+            #[must_use]
+            pub fn name(self) -> &'static str {
+                $list::ALL[self.0].0
+            }
+
+            /// The spectrum.
+            #[must_use]
+            pub fn spectrum(self) -> &'static TabulatedSpectrum {
+                $list::ALL[self.0].1
+            }
+        }
+
+        impl fmt::Display for $ty {
+            /// The name used on command lines, in tables and in CSV.
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+
+        impl fmt::Debug for $ty {
+            fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                write!(f, concat!(stringify!($ty), "({})"), self.name())
+            }
+        }
+
+        impl $ty {
+            /// The built-in one of this name, in any case.
+            #[deprecated(since = "0.2.0", note = "use `str::parse`")]
+            #[must_use]
+            pub fn from_name(name: &str) -> Option<Self> {
+                name.parse().ok()
+            }
+        }
+
+        impl FromStr for $ty {
+            type Err = Error;
+            /// The built-in one of this name, in any case.
+            fn from_str(s: &str) -> Result<Self, Error> {
+                let found = $list::NAMES.iter().position(|n| n.eq_ignore_ascii_case(s));
+                found.map($ty).ok_or_else(|| unknown($what, &$list::NAMES, s))
+            }
+        }
+    };
 }
 
-impl Patch {
-    /// All patches, in the order of Appendix 2's rows.
-    pub const ALL: [Patch; 6] = [Patch::E2, Patch::F4, Patch::G4, Patch::H4, Patch::J4, Patch::A1];
+/// The assignment's spectra at the top of `data`: moved into their
+/// lists (`data::lights::D65`, `data::patches::G4`,
+/// `data::cie1931::X_BAR`).
+macro_rules! moved {
+    ($($name:ident => $path:path, $note:literal;)*) => {$(
+        #[doc = concat!("Moved to `data::", stringify!($path), "`.")]
+        #[deprecated(since = "0.2.0", note = $note)]
+        pub static $name: &TabulatedSpectrum = &$path;
+    )*};
+}
+moved! {
+    A => lights::A, "use `data::lights::A`";
+    D65 => lights::D65, "use `data::lights::D65`";
+    F11 => lights::F11, "use `data::lights::F11`";
+    E2 => patches::E2, "use `data::patches::E2`";
+    F4 => patches::F4, "use `data::patches::F4`";
+    G4 => patches::G4, "use `data::patches::G4`";
+    H4 => patches::H4, "use `data::patches::H4`";
+    J4 => patches::J4, "use `data::patches::J4`";
+    A1 => patches::A1, "use `data::patches::A1`";
+    CIE_X => cie1931::X_BAR, "use `data::cie1931::X_BAR`";
+    CIE_Y => cie1931::Y_BAR, "use `data::cie1931::Y_BAR`";
+    CIE_Z => cie1931::Z_BAR, "use `data::cie1931::Z_BAR`";
+}
 
-    /// The patch's reflectance.
-    #[must_use]
-    pub fn spectrum(self) -> &'static TabulatedSpectrum {
-        match self {
-            Patch::E2 => &patches::E2,
-            Patch::F4 => &patches::F4,
-            Patch::G4 => &patches::G4,
-            Patch::H4 => &patches::H4,
-            Patch::J4 => &patches::J4,
-            Patch::A1 => &patches::A1,
-        }
+/// A built-in light, by its place in [`lights::ALL`] (the appendix's
+/// three first): `Light::F11`, `Light::CIE_D65`, `"led-b3".parse()`.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Light(usize);
+
+handle!(Light, lights, "a built-in light");
+
+impl Light {
+    /// The assignment's three lights, in the order of Appendix 2's columns.
+    pub const APPENDIX: [Light; 3] = [Light::A, Light::D65, Light::F11];
+
+    /// Every built-in light, in [`lights::ALL`]'s order.
+    #[deprecated(since = "0.2.0", note = "use `Light::ALL`")]
+    pub fn all() -> impl Iterator<Item = Light> {
+        Light::ALL.into_iter()
     }
 }
 
-named_choices!(Patch, "a built-in patch": E2 => "E2", F4 => "F4", G4 => "G4", H4 => "H4", J4 => "J4", A1 => "A1");
+/// One of the six ColorChecker SG patches of the appendix, by its place in
+/// [`patches::ALL`] (Appendix 2's row order): `Patch::G4`, `"a1".parse()`.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Patch(usize);
+
+handle!(Patch, patches, "a built-in patch");
 
 /// The names of the built-in surfaces: the patches, then the conductors.
-pub const SURFACE_NAMES: [&str; 6 + conductors::NAMES.len()] = surface_names();
+pub const SURFACE_NAMES: [&str; patches::NAMES.len() + conductors::NAMES.len()] = surface_names();
 
-const fn surface_names() -> [&'static str; 6 + conductors::NAMES.len()] {
-    let mut out = [""; 6 + conductors::NAMES.len()];
-    let patches = ["E2", "F4", "G4", "H4", "J4", "A1"];
+const fn surface_names() -> [&'static str; patches::NAMES.len() + conductors::NAMES.len()] {
+    let mut out = [""; patches::NAMES.len() + conductors::NAMES.len()];
+    let p = patches::NAMES.len();
     let mut i = 0;
     while i < out.len() {
-        out[i] = if i < 6 { patches[i] } else { conductors::NAMES[i - 6] };
+        out[i] = if i < p { patches::NAMES[i] } else { conductors::NAMES[i - p] };
         i += 1;
     }
     out
@@ -259,12 +300,11 @@ const fn surface_names() -> [&'static str; 6 + conductors::NAMES.len()] {
 /// normal-incidence reflectance tabulated every nanometre
 /// ([`NormalReflectance::tabulated`](crate::spectrum::NormalReflectance::tabulated)).
 pub fn surface_named(name: &str) -> Result<Cow<'static, TabulatedSpectrum>, Error> {
-    if let Ok(patch) = name.parse::<Patch>() {
-        return Ok(Cow::Borrowed(patch.spectrum()));
+    if let Some(patch) = find(&patches::ALL, name) {
+        return Ok(Cow::Borrowed(patch));
     }
-    let conductor = conductors::ALL.iter().find(|(n, _)| n.eq_ignore_ascii_case(name));
-    match conductor {
-        Some((_, c)) => Ok(Cow::Owned(c.reflectance().tabulated())),
+    match find(&conductors::ALL, name) {
+        Some(c) => Ok(Cow::Owned(c.reflectance().tabulated())),
         None => Err(unknown("a built-in surface", &SURFACE_NAMES, name)),
     }
 }

@@ -1,6 +1,8 @@
 //! Dense tables: any spectrum at every whole nanometre from 380 to 730 nm,
-//! in `f32` or `f64`, looked up at the nearest one: the fast tabulated
-//! path, as pbrt-v4's `DenselySampledSpectrum` (also 1 nm, also rounded).
+//! kept in `f32` and `f64`, looked up at the nearest one: the fast
+//! tabulated path, as pbrt-v4's `DenselySampledSpectrum` (also 1 nm, also
+//! rounded). Wavelengths in `f32` read the `f32` table, in `f64` the `f64`
+//! one: the table has no precision of its own to choose.
 //!
 //! A hero sample finds each wavelength's nearest whole nanometre once,
 //! when it is drawn ([`Wavelengths::nearest_nm`]); a [`DenseSpectrum`]
@@ -25,8 +27,8 @@
 //! ```
 //! use speclab::{data::{lights, patches}, HeroSample, sampling::reference};
 //! use speclab::spectrum::{DenseObserver, DenseSpectrum};
-//! let (light, surface) = (DenseSpectrum::<f32>::new(&lights::F11), DenseSpectrum::<f32>::new(&patches::H4));
-//! let observer = DenseObserver::<f32>::new();
+//! let (light, surface) = (DenseSpectrum::new(&lights::F11), DenseSpectrum::new(&patches::H4));
+//! let observer = DenseObserver::new();
 //! let mut pixel = speclab::Xyz::ZERO;
 //! for i in 0..256_u16 {
 //!     let h = HeroSample::<4, f32>::with_observer((f32::from(i) + 0.5) / 256.0, &observer);
@@ -37,7 +39,6 @@
 //! ```
 
 use std::borrow::Cow;
-use std::marker::PhantomData;
 
 use crate::spectrum::float::Float;
 use crate::spectrum::interface::{Pieces, Spectrum};
@@ -53,45 +54,50 @@ fn entry<R: Copy>(table: &[R; DENSE_ENTRIES], i: u16) -> R {
     table[usize::from(i).min(DENSE_ENTRIES - 1)]
 }
 
-/// A spectrum at every whole nanometre from 380 to 730 nm, in precision
-/// `T`, looked up at the nearest one.
+/// A spectrum at every whole nanometre from 380 to 730 nm, in `f32` and
+/// `f64`, looked up at the nearest one.
 #[derive(Clone, Debug, PartialEq)]
-pub struct DenseSpectrum<T: Float = f64> {
+pub struct DenseSpectrum {
     /// At 380, 381, …, 730 nm, then a zero (for wavelengths outside).
-    values: Box<[T; DENSE_ENTRIES]>,
+    values: Box<[f64; DENSE_ENTRIES]>,
+    /// The same, rounded to `f32`.
+    values_f32: Box<[f32; DENSE_ENTRIES]>,
 }
 
-impl<T: Float> DenseSpectrum<T> {
-    /// `s` at every whole nanometre from 380 to 730, rounded to `T`.
+impl DenseSpectrum {
+    /// `s` at every whole nanometre from 380 to 730 (and rounded to `f32`).
     #[must_use]
     pub fn new(s: &(impl Spectrum + ?Sized)) -> Self {
         let knots: Vec<f64> = (0..DENSE_ENTRIES - 1).map(|i| LAMBDA_MIN + i as f64).collect();
         let mut at = vec![0.0; knots.len()];
         s.eval_many(&knots, &mut at);
-        let values = std::array::from_fn(|i| if i < at.len() { T::from_f64(at[i]) } else { T::ZERO });
-        DenseSpectrum { values: Box::new(values) }
+        let values: [f64; DENSE_ENTRIES] = std::array::from_fn(|i| at.get(i).copied().unwrap_or(0.0));
+        let values_f32 = values.map(|v| v as f32);
+        DenseSpectrum { values: Box::new(values), values_f32: Box::new(values_f32) }
     }
 
-    /// The values at 380, 381, …, 730 nm.
+    /// The values at 380, 381, …, 730 nm, in precision `T`.
     #[must_use]
-    pub fn values(&self) -> &[T; DENSE_ENTRIES - 1] {
-        self.values.first_chunk().expect("351 of 352 entries")
+    pub fn values<T: Float>(&self) -> &[T; DENSE_ENTRIES - 1] {
+        let all = T::choose_row(&self.values_f32, &self.values);
+        all.first_chunk().expect("351 of 352 entries")
     }
 
     /// The values at K wavelengths (a hero sample's or a fixed rule's), at
-    /// the nearest whole nanometre each carries: one load per wavelength.
+    /// the nearest whole nanometre each carries, from the table of the
+    /// wavelengths' precision: one load per wavelength.
     #[inline(always)]
     #[must_use]
-    pub fn sample<const K: usize, U: Float>(&self, at: &impl Wavelengths<K, U>) -> SampledSpectrum<K, U> {
-        let nearest = at.nearest_nm();
-        SampledSpectrum::new(std::array::from_fn(|j| U::from_f64(entry(&self.values, nearest[j]).to_f64())))
+    pub fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {
+        let (nearest, table) = (at.nearest_nm(), T::choose_row(&self.values_f32, &self.values));
+        SampledSpectrum::new(std::array::from_fn(|j| entry(table, nearest[j])))
     }
 }
 
-impl<T: Float> Spectrum for DenseSpectrum<T> {
+impl Spectrum for DenseSpectrum {
     #[inline(always)]
     fn eval(&self, lambda: f64) -> f64 {
-        entry(&self.values, nearest_nm(lambda)).to_f64()
+        entry(&self.values, nearest_nm(lambda))
     }
 
     #[inline(always)]
@@ -104,7 +110,7 @@ impl<T: Float> Spectrum for DenseSpectrum<T> {
     #[inline(always)]
     fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
         for (v, &l) in values.iter_mut().zip(lambda) {
-            *v = f32::from_f64(self.eval(f64::from(l)));
+            *v = entry(&self.values_f32, nearest_nm(f64::from(l)));
         }
     }
 
@@ -127,33 +133,25 @@ impl<T: Float> Spectrum for DenseSpectrum<T> {
 }
 
 /// The CIE 1931 observer at every whole nanometre from 380 to 730 nm, in
-/// precision `T`: one row `[x̄, ȳ, z̄, 0]` per nanometre, computed at
-/// compile time, looked up at the nearest one. A zero-sized value.
+/// `f32` and `f64`: one row `[x̄, ȳ, z̄, 0]` per nanometre, computed at
+/// compile time, looked up at the nearest one in the wavelengths'
+/// precision. A zero-sized value.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct DenseObserver<T: Float = f64>(PhantomData<T>);
+pub struct DenseObserver;
 
-impl<T: Float> DenseObserver<T> {
+impl DenseObserver {
     /// The dense observer (nothing to build: its rows are static).
     #[must_use]
     pub const fn new() -> Self {
-        DenseObserver(PhantomData)
-    }
-
-    /// Its rows: 380, 381, …, 730 nm, then a zero row.
-    #[inline(always)]
-    fn rows() -> &'static [[T; 4]; DENSE_ENTRIES] {
-        T::choose(&ROWS_F32, &ROWS_F64)
+        DenseObserver
     }
 }
 
-impl<T: Float> Observer for DenseObserver<T> {
+impl Observer for DenseObserver {
     #[inline(always)]
-    fn xyz_bar_at<const K: usize, U: Float>(&self, at: &impl Wavelengths<K, U>) -> [[U; 4]; K] {
-        let nearest = at.nearest_nm();
-        std::array::from_fn(|j| {
-            let row = entry(Self::rows(), nearest[j]);
-            std::array::from_fn(|c| U::from_f64(row[c].to_f64()))
-        })
+    fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
+        let (nearest, rows) = (at.nearest_nm(), T::choose(&ROWS_F32, &ROWS_F64));
+        std::array::from_fn(|j| entry(rows, nearest[j]))
     }
 }
 

@@ -4,9 +4,10 @@
 //! [`Float`] is implemented for those two types only (it is sealed). Every
 //! per-sample type takes it as a parameter that defaults to `f64`:
 //! `SampledSpectrum<K, T>`, `SampledWavelengths<K, T>`,
-//! `RegularSpectrum<M, B, T>`, `DenseSpectrum<T>`. One source serves both
-//! precisions; a renderer that names `f32` gets `f32` values, wavelengths
-//! and weights, and never converts.
+//! `RegularSpectrum<M, B, T>`. One source serves both precisions; a
+//! renderer that names `f32` gets `f32` values, wavelengths and weights,
+//! and never converts. Dense tables (`DenseSpectrum`, `DenseObserver`)
+//! keep both and are read in the wavelengths' precision.
 //!
 //! **Why a parameter, not two families**: the element type is the one
 //! place where users choose (glam generates `Vec4` and `DVec4` from one
@@ -75,42 +76,46 @@ pub trait Float:
     /// The smaller of the two, ignoring a NaN (as `f64::min`).
     #[must_use]
     fn min(self, other: Self) -> Self;
-    /// Wavelengths and the values to fill at them, in this precision (how
-    /// a spectrum reaches its `f32` or `f64` evaluation).
-    fn lanes<'a>(lambda: &'a [Self], values: &'a mut [Self]) -> Lanes<'a>;
-    /// The table of this precision out of a pair (for tables computed at
-    /// compile time in both).
-    fn choose<'a, const N: usize, const R: usize>(
-        f32s: &'a [[f32; N]; R],
-        f64s: &'a [[f64; N]; R],
-    ) -> &'a [[Self; N]; R];
 }
 
-/// Wavelengths (nm) and the values a spectrum fills at them, in one of the
-/// two precisions: what [`Spectrum::sample`](super::Spectrum::sample)
-/// hands to `eval_many` or `eval_many_f32`.
-#[derive(Debug)]
-pub enum Lanes<'a> {
-    /// Single precision.
-    F32 {
-        /// The wavelengths, nm.
-        lambda: &'a [f32],
-        /// The values to fill.
-        values: &'a mut [f32],
-    },
-    /// Double precision.
-    F64 {
-        /// The wavelengths, nm.
-        lambda: &'a [f64],
-        /// The values to fill.
-        values: &'a mut [f64],
-    },
-}
+/// What only the crate uses of a precision: the trait is sealed, and
+/// these are not part of the API.
+pub(crate) mod sealed {
+    /// Implemented for `f32` and `f64` alone.
+    pub trait Sealed: Sized {
+        /// Wavelengths and the values to fill at them, in this precision (how
+        /// a spectrum reaches its `f32` or `f64` evaluation).
+        fn lanes<'a>(lambda: &'a [Self], values: &'a mut [Self]) -> Lanes<'a>;
+        /// The table of this precision out of a pair (for tables computed at
+        /// compile time in both).
+        fn choose<'a, const N: usize, const R: usize>(
+            f32s: &'a [[f32; N]; R],
+            f64s: &'a [[f64; N]; R],
+        ) -> &'a [[Self; N]; R];
+        /// The row of this precision out of a pair.
+        fn choose_row<'a, const N: usize>(f32s: &'a [f32; N], f64s: &'a [f64; N]) -> &'a [Self; N];
+    }
 
-mod sealed {
-    pub trait Sealed {}
-    impl Sealed for f32 {}
-    impl Sealed for f64 {}
+    /// Wavelengths (nm) and the values a spectrum fills at them, in one of the
+    /// two precisions: what [`Spectrum::sample`](super::Spectrum::sample)
+    /// hands to `eval_many` or `eval_many_f32`.
+    #[derive(Debug)]
+    pub enum Lanes<'a> {
+        /// Single precision.
+        F32 {
+            /// The wavelengths, nm.
+            lambda: &'a [f32],
+            /// The values to fill.
+            values: &'a mut [f32],
+        },
+        /// Double precision.
+        F64 {
+            /// The wavelengths, nm.
+            lambda: &'a [f64],
+            /// The values to fill.
+            values: &'a mut [f64],
+        },
+    }
 }
 
 impl Float for f32 {
@@ -140,15 +145,22 @@ impl Float for f32 {
     fn min(self, other: f32) -> f32 {
         f32::min(self, other)
     }
+}
+
+impl sealed::Sealed for f32 {
     #[inline(always)]
-    fn lanes<'a>(lambda: &'a [f32], values: &'a mut [f32]) -> Lanes<'a> {
-        Lanes::F32 { lambda, values }
+    fn lanes<'a>(lambda: &'a [f32], values: &'a mut [f32]) -> sealed::Lanes<'a> {
+        sealed::Lanes::F32 { lambda, values }
     }
     #[inline(always)]
     fn choose<'a, const N: usize, const R: usize>(
         f32s: &'a [[f32; N]; R],
         _: &'a [[f64; N]; R],
     ) -> &'a [[f32; N]; R] {
+        f32s
+    }
+    #[inline(always)]
+    fn choose_row<'a, const N: usize>(f32s: &'a [f32; N], _: &'a [f64; N]) -> &'a [f32; N] {
         f32s
     }
 }
@@ -180,15 +192,22 @@ impl Float for f64 {
     fn min(self, other: f64) -> f64 {
         f64::min(self, other)
     }
+}
+
+impl sealed::Sealed for f64 {
     #[inline(always)]
-    fn lanes<'a>(lambda: &'a [f64], values: &'a mut [f64]) -> Lanes<'a> {
-        Lanes::F64 { lambda, values }
+    fn lanes<'a>(lambda: &'a [f64], values: &'a mut [f64]) -> sealed::Lanes<'a> {
+        sealed::Lanes::F64 { lambda, values }
     }
     #[inline(always)]
     fn choose<'a, const N: usize, const R: usize>(
         _: &'a [[f32; N]; R],
         f64s: &'a [[f64; N]; R],
     ) -> &'a [[f64; N]; R] {
+        f64s
+    }
+    #[inline(always)]
+    fn choose_row<'a, const N: usize>(_: &'a [f32; N], f64s: &'a [f64; N]) -> &'a [f64; N] {
         f64s
     }
 }

@@ -23,8 +23,10 @@
 //! buckets), its polynomial
 //! [`pieces`](Spectrum::pieces) (exact integration), the
 //! [`samples`](Spectrum::samples) it interpolates (the reference as a dot
-//! product, light pdfs from its polynomials), and a [`Cache`] for what is
-//! computed from it once (a light's exact reference weights).
+//! product, light pdfs from its polynomials). What is computed from a
+//! spectrum once (a light's exact weights, its pdf, a fitted rule) is an
+//! explicit value its owner keeps (`sampling::PreparedLight`,
+//! `sampling::pdf::LightPdf`, `sampling::fitted::FittedRules`).
 //!
 //! [`eval`]: Spectrum::eval
 //! [`eval_many`]: Spectrum::eval_many
@@ -76,8 +78,8 @@
 
 use std::borrow::Cow;
 
-use crate::spectrum::cache::Cache;
-use crate::spectrum::float::{Float, Lanes};
+use crate::spectrum::float::Float;
+use crate::spectrum::float::sealed::Lanes;
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{Interpolation, Role};
 
@@ -169,13 +171,6 @@ pub trait Spectrum {
     fn running_integral(&self, _lambda: f64) -> Option<f64> {
         None
     }
-
-    /// Where the spectrum keeps what is computed from it once (as a light:
-    /// its exact reference weights), if it has one: tables do; a
-    /// renderer's own type can hold a [`Cache`] too.
-    fn cache(&self) -> Option<&Cache> {
-        None
-    }
 }
 
 /// A reference or a box to a spectrum is the spectrum.
@@ -202,9 +197,6 @@ macro_rules! forward_spectrum {
             }
             fn running_integral(&self, lambda: f64) -> Option<f64> {
                 (**self).running_integral(lambda)
-            }
-            fn cache(&self) -> Option<&Cache> {
-                (**self).cache()
             }
         }
     )*};

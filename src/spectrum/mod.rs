@@ -17,7 +17,6 @@
 //! - [`SampledSpectrum`]: a spectrum's values at K wavelengths (any
 //!   [`Wavelengths`]), with point-wise arithmetic, in `f64` or `f32`
 //!   ([`Float`]).
-//! - [`Cache`]: where a spectrum keeps what is computed from it once.
 //! - [`validate`]: what makes samples a spectrum (shared with build
 //!   scripts through `speclab_tables`).
 //! - [`observer`]: the CIE 1931 x̄, ȳ, z̄ at any wavelength.
@@ -41,7 +40,6 @@
 //! ```
 
 mod analytic;
-pub(crate) mod cache;
 pub mod data;
 mod dense;
 mod float;
@@ -65,9 +63,8 @@ pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
 pub use speclab_tables::validate;
 
 pub use analytic::{Blackbody, Constant, FnSpectrum};
-pub use cache::Cache;
 pub use dense::{DenseObserver, DenseSpectrum};
-pub use float::{Float, Lanes};
+pub use float::Float;
 pub use interface::{Pieces, Samples, Spectrum};
 pub use mixture::Mixture;
 pub use observer::{Cie1931, Observer};
@@ -75,5 +72,21 @@ pub use optics::{Cauchy, Conductor, NormalReflectance, Sellmeier};
 pub use product::Product;
 pub use sampled::{SampledSpectrum, Wavelengths};
 pub use sigmoid::{SigmoidPolynomial, sigmoid};
-pub use tabulated::{Tables, TabulatedSpectrum};
+#[doc(hidden)]
+pub use tabulated::Tables;
+pub use tabulated::TabulatedSpectrum;
 pub use validate::{Interpolation, Role};
+
+/// The width of the range, nm: renamed.
+#[deprecated(since = "0.2.0", note = "use `LAMBDA_WIDTH`")]
+pub const WIDTH: f64 = LAMBDA_WIDTH;
+
+/// Where a spectrum kept what was computed from it: gone. Prepared values
+/// are explicit now, owned by whoever prepares them.
+#[deprecated(
+    since = "0.2.0",
+    note = "prepare explicitly: `sampling::PreparedLight` (exact weights), \
+            `sampling::pdf::LightPdf` (pdfs), `sampling::fitted::FittedRules` (rules)"
+)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Cache;

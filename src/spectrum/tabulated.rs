@@ -27,7 +27,6 @@ use std::borrow::Cow;
 use std::fmt;
 
 use crate::error::Error;
-use crate::spectrum::cache::Cache;
 use crate::spectrum::float::Float;
 use crate::spectrum::interface::{Pieces, Samples, Spectrum};
 use crate::spectrum::interp::{self, Coeffs};
@@ -56,14 +55,8 @@ pub struct Tables {
     pub clean: &'static [bool],
 }
 
-/// Samples of a spectrum and the interpolant through them.
-///
-/// Used as a light, a spectrum keeps the exact reference weights it computes
-/// on first use in its [`Cache`] (see `sampling::reference`), for the grid
-/// of the first reflectance it meets on that path: a built-in light, its
-/// clone, a scaled copy and the same light loaded from a file all take the
-/// same path. Equality looks at the samples and every table of the
-/// interpolant (not at what is kept).
+/// Samples of a spectrum and the interpolant through them. Equality looks
+/// at the samples and every table of the interpolant.
 #[derive(Clone)]
 pub struct TabulatedSpectrum {
     role: Role,
@@ -83,8 +76,6 @@ pub struct TabulatedSpectrum {
     lookup: Option<UniformLookup>,
     /// The role's clamp interval.
     bounds: [f64; 2],
-    /// As a light: its exact reference weights, computed on first use.
-    cache: Cache,
 }
 
 impl PartialEq for TabulatedSpectrum {
@@ -112,9 +103,10 @@ impl TabulatedSpectrum {
     /// A spectrum over static tables, for code that `speclab_tables::Codegen`
     /// generates: the tables must be the ones it computes. `None` if their
     /// lengths do not fit together (generated code turns that into a
-    /// compile-time error).
+    /// compile-time error). Reached through `speclab::__codegen`, not part
+    /// of the API.
     #[must_use]
-    pub const fn from_static(role: Role, interpolation: Interpolation, t: Tables) -> Option<Self> {
+    pub(crate) const fn from_static(role: Role, interpolation: Interpolation, t: Tables) -> Option<Self> {
         let n = t.lambda.len();
         let fits = n >= interpolation.min_samples()
             && t.values.len() == n
@@ -137,7 +129,6 @@ impl TabulatedSpectrum {
             ends: [t.lambda[0], t.lambda[n - 1]],
             lookup: UniformLookup::for_table(t.lambda, t.coeffs.len()),
             bounds: role.bounds(),
-            cache: Cache::new(),
         })
     }
 
@@ -185,7 +176,6 @@ impl TabulatedSpectrum {
             ends: [lambda[0], lambda[lambda.len() - 1]],
             lookup: UniformLookup::for_table(&lambda, coeffs.len()),
             bounds: role.bounds(),
-            cache: Cache::new(),
             lambda: Cow::Owned(lambda),
             values: Cow::Owned(values),
             coeffs: Cow::Owned(coeffs),
@@ -401,10 +391,6 @@ impl Spectrum for TabulatedSpectrum {
     /// table.
     fn running_integral(&self, lambda: f64) -> Option<f64> {
         Some(self.cumulative(lambda))
-    }
-
-    fn cache(&self) -> Option<&Cache> {
-        Some(&self.cache)
     }
 }
 

@@ -23,14 +23,12 @@
 //! differences, so `min(yₖ, yₖ₊₁) − Cₖ·S ≥ 0` and `max(yₖ, yₖ₊₁) + Cₖ·S ≤ 1`,
 //! with S the larger |difference|, clear segment k.
 //!
-//! A light computes its weights once, on first use, and keeps them in its
-//! [`Cache`] if it has one (tables do); `sampling::PreparedLight` applies
+//! `sampling::PreparedLight` computes them once for a light and applies
 //! them. Any piecewise polynomial light has them: the light enters only
 //! through its value and its breaks.
 
 use std::borrow::Cow;
 
-use crate::spectrum::cache::{Weights, equidistant_step, stencil};
 use crate::spectrum::integrate;
 use crate::spectrum::interface::Spectrum;
 use crate::spectrum::interp::{self, Coeffs};
@@ -40,34 +38,97 @@ use crate::spectrum::quadrature::{self, integrate};
 use crate::spectrum::validate::Interpolation;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
-/// `light`'s exact reference weights for reflectances on `grid`
-/// interpolated by `interpolation`: the ones its cache keeps (computed
-/// there on first use, for the first grid asked for), or computed now for
-/// another grid.
-pub(crate) fn for_grid<'a, L: Spectrum + ?Sized>(
-    light: &'a L,
-    grid: &[f64],
-    interpolation: Interpolation,
-) -> Cow<'a, Weights> {
-    let compute = || Weights::compute(&light, grid, interpolation);
-    if let Some(kept) = light.cache().map(|c| c.weights(compute))
-        && kept.fits(grid, interpolation)
-    {
-        return Cow::Borrowed(kept);
-    }
-    Cow::Owned(compute())
+/// Exact weights of one light for reflectances on one grid.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Weights {
+    /// The reflectances' wavelengths, nm.
+    pub(crate) grid: Vec<f64>,
+    /// The reflectances' interpolation.
+    pub(crate) cubic: bool,
+    /// The integration range: 380–730 nm ∩ the light's and the grid's support.
+    pub(crate) range: [f64; 2],
+    /// Per sample, per channel.
+    pub(crate) samples: Vec<[f64; 3]>,
+    /// Per segment, per stencil sample (4; linear uses 2), per channel.
+    pub(crate) segments: Vec<[[f64; 3]; 4]>,
+    /// Per segment: the stencil vectors giving the cubic's inner Bernstein
+    /// coefficients b₁ and b₂ (b₀ and b₃ are the segment's samples).
+    pub(crate) hull: Vec<[[f64; 4]; 2]>,
+    /// Per segment: the |coefficient sum| turning the stencil's two second
+    /// divided differences into a bound on the inner Bernstein coefficients'
+    /// distance from the linear interpolation (0 for linear grids).
+    pub(crate) margins: Vec<f64>,
+    /// The grid's step if it is equidistant ([`Weights::step`]), found once.
+    pub(crate) step: Option<f64>,
+    /// The largest margin of the middle segments (all but the first and the
+    /// last), found once.
+    pub(crate) middle_margin: f64,
 }
 
-/// The weights `light` keeps in its cache (computing them there for `grid`
-/// if it keeps none yet), if they are for reflectances on `grid`
-/// interpolated by `interpolation`.
-pub(crate) fn kept_for<'a, L: Spectrum + ?Sized>(
-    light: &'a L,
-    grid: &[f64],
-    interpolation: Interpolation,
-) -> Option<&'a Weights> {
-    let kept = light.cache()?.weights(|| Weights::compute(&light, grid, interpolation));
-    kept.fits(grid, interpolation).then_some(kept)
+impl Weights {
+    /// The reflectances' wavelengths, nm.
+    #[must_use]
+    pub(crate) fn grid(&self) -> &[f64] {
+        &self.grid
+    }
+
+    /// The reflectances' interpolation.
+    #[must_use]
+    pub(crate) fn interpolation(&self) -> Interpolation {
+        if self.cubic { Interpolation::Cubic } else { Interpolation::Linear }
+    }
+
+    /// The integration range, nm.
+    pub(crate) fn range(&self) -> [f64; 2] {
+        self.range
+    }
+
+    /// One weight per sample and channel.
+    pub(crate) fn samples(&self) -> &[[f64; 3]] {
+        &self.samples
+    }
+
+    /// Segment `k`'s weights per stencil sample, and where its stencil starts.
+    pub(crate) fn segment(&self, k: usize) -> (&[[f64; 3]], usize) {
+        let (s, width) = stencil(self.cubic, k, self.grid.len());
+        (&self.segments[k][..width], s)
+    }
+
+    /// Segment `k`'s Bernstein stencil vectors (cubic grids).
+    pub(crate) fn hull(&self) -> &[[[f64; 4]; 2]] {
+        &self.hull
+    }
+
+    /// Per segment, the margin `Cₖ` of `min(yₖ, yₖ₊₁) − Cₖ·S ≥ 0`, with S
+    /// the larger |second divided difference| of the segment's stencil.
+    pub(crate) fn margins(&self) -> &[f64] {
+        &self.margins
+    }
+
+    /// The largest of [`Weights::margins`] but the first and the last (0
+    /// for fewer than three segments).
+    pub(crate) fn middle_margin(&self) -> f64 {
+        self.middle_margin
+    }
+
+    /// For an equidistant grid of step h, the step (margins divided by
+    /// `2h²` apply to plain second differences `y₀ − 2y₁ + y₂`, which are
+    /// `2h²·[x₀, x₁, x₂]y`). `None` for other grids.
+    pub(crate) fn step(&self) -> Option<f64> {
+        self.step
+    }
+}
+
+/// The step of `grid` (two samples at least) if its samples are equally
+/// spaced (to 1e-9 of the step), else `None`.
+pub(crate) fn equidistant_step(grid: &[f64]) -> Option<f64> {
+    let h = (grid[grid.len() - 1] - grid[0]) / (grid.len() - 1) as f64;
+    grid.windows(2).all(|w| ((w[1] - w[0]) - h).abs() <= 1e-9 * h).then_some(h)
+}
+
+/// The stencil of segment `k` of `n` samples: first sample and width.
+pub(crate) fn stencil(cubic: bool, k: usize, n: usize) -> (usize, usize) {
+    if cubic { (speclab_tables::interp::stencil(k, n), 4) } else { (k, 2) }
 }
 
 impl Weights {
@@ -232,4 +293,40 @@ pub(crate) fn segment_exact(
         let lr = light.eval(x) * r;
         [cmf[0].eval(x) * lr, cmf[1].eval(x) * lr, cmf[2].eval(x) * lr]
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Weights, equidistant_step};
+
+    /// The step of an equally spaced grid, to 1e-9 of it; `None` for any
+    /// other grid.
+    #[test]
+    fn the_step_of_an_equidistant_grid() {
+        let grid = |h: f64, n: usize| (0..n).map(|i| 380.0 + h * i as f64).collect::<Vec<f64>>();
+        assert_eq!(equidistant_step(&grid(10.0, 36)), Some(10.0));
+        assert_eq!(equidistant_step(&grid(0.5, 701)), Some(0.5));
+        assert_eq!(equidistant_step(&[400.0, 700.0]), Some(300.0));
+        let mut uneven = grid(10.0, 36);
+        uneven[17] += 1e-9; // 1e-10 of the step: within the tolerance
+        assert_eq!(equidistant_step(&uneven).map(|h| (h - 10.0).abs() < 1e-12), Some(true));
+        uneven[17] += 1e-6; // 1e-7 of the step: not equidistant
+        assert_eq!(equidistant_step(&uneven), None);
+        assert_eq!(equidistant_step(&[380.0, 390.0, 410.0]), None);
+    }
+
+    /// A light's weights keep their grid's step and the largest middle
+    /// margin.
+    #[test]
+    fn weights_keep_the_step_and_the_middle_margin() {
+        use crate::spectrum::{Interpolation, data::lights};
+        let grid: Vec<f64> = (0..36).map(|i| 380.0 + 10.0 * f64::from(i)).collect();
+        let w = Weights::compute(&lights::A, &grid, Interpolation::Cubic);
+        assert_eq!(w.step(), Some(10.0));
+        let m = w.margins();
+        assert_eq!(w.middle_margin(), m[1..m.len() - 1].iter().fold(0.0, |a: f64, &b| a.max(b)));
+        assert!(w.middle_margin() > 0.0 && m.len() == 35);
+        let uneven = [380.0, 400.0, 450.0, 600.0, 730.0];
+        assert_eq!(Weights::compute(&lights::A, &uneven, Interpolation::Cubic).step(), None);
+    }
 }

@@ -140,9 +140,9 @@ impl Codegen {
         let _ = writeln!(
             out,
             "/// {role:?} spectrum from {origin:?}.\n\
-             pub static {name}: {p}::TabulatedSpectrum = {p}::TabulatedSpectrum::from_static(\n    \
+             pub static {name}: {p}::TabulatedSpectrum = {p}::__codegen::tabulated(\n    \
              {p}::Role::{role:?},\n    {p}::Interpolation::{interpolation:?},\n    \
-             {p}::spectrum::Tables {{ lambda: &{name}_LAMBDA, values: &{name}_VALUES, \
+             {p}::__codegen::Tables {{ lambda: &{name}_LAMBDA, values: &{name}_VALUES, \
              coeffs: &{name}_COEFFS, breaks: &{name}_BREAKS, prefix: &{name}_PREFIX, clean: &{name}_CLEAN }},\n)\n\
              .expect(\"speclab codegen: inconsistent tables for {name}\");"
         );

@@ -133,8 +133,8 @@ impl fmt::Display for ParseError {
 
 impl std::error::Error for ParseError {}
 
-/// A file or stream that could not be read as text. (Exhaustive: speclab
-/// maps each variant to its own error.)
+/// A file or stream that could not be read as text (speclab's
+/// `Error::Read` carries it as it is).
 #[derive(Debug)]
 pub enum ReadError {
     /// The file or stream failed, or is not UTF-8 text.

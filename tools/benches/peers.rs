@@ -48,8 +48,8 @@ fn main() {
     let tables = Tables::new(light, surface);
     let prepared = PreparedLight::for_grid(light, surface.lambda(), surface.interpolation()).expect("grid");
     let reflectances = mixtures(SPECTRA);
-    let (dl32, ds32) = (DenseSpectrum::<f32>::new(light), DenseSpectrum::<f32>::new(surface));
-    let (dl64, ds64) = (DenseSpectrum::<f64>::new(light), DenseSpectrum::<f64>::new(surface));
+    let (dl32, ds32) = (DenseSpectrum::new(light), DenseSpectrum::new(surface));
+    let (dl64, ds64) = (DenseSpectrum::new(light), DenseSpectrum::new(surface));
     let (lc, sc) =
         (RegularSpectrum::<16, Center>::center(light), RegularSpectrum::<16, Center>::center(surface));
     let (lb, sb) = (
@@ -92,10 +92,10 @@ fn main() {
             Case::new("hand-tuned", || (black_box(kernels::hand_tuned_hero(&tables, N, &mut r1)), 4 * N).1),
             Case::new("pbrt-style", || (black_box(kernels::pbrt_hero(&tables, N, &mut r3)), 4 * N).1),
             Case::new("dense f32", || {
-                (black_box(kernels::speclab_dense_hero(&dl32, &ds32, N, &mut r6)), 4 * N).1
+                (black_box(kernels::speclab_dense_hero::<f32>(&dl32, &ds32, N, &mut r6)), 4 * N).1
             }),
             Case::new("dense f64", || {
-                (black_box(kernels::speclab_dense_hero(&dl64, &ds64, N, &mut r7)), 4 * N).1
+                (black_box(kernels::speclab_dense_hero::<f64>(&dl64, &ds64, N, &mut r7)), 4 * N).1
             }),
             Case::new("exact f64", || {
                 (black_box(kernels::speclab_hero::<4, f64>(light, surface, N, &mut r2)), 4 * N).1
@@ -142,12 +142,7 @@ fn calls<T>(mut f: impl FnMut() -> T) -> usize {
 const CALLS: usize = 64;
 
 /// Converts `r` into `out` on `threads` threads; returns spectra converted.
-fn batch(
-    prepared: &PreparedLight<'_, TabulatedSpectrum>,
-    r: &[f64],
-    out: &mut [Xyz],
-    threads: usize,
-) -> usize {
+fn batch(prepared: &PreparedLight<&TabulatedSpectrum>, r: &[f64], out: &mut [Xyz], threads: usize) -> usize {
     if threads == 1 {
         prepared.batch(r, out).expect("valid reflectances");
         return out.len();

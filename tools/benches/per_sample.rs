@@ -45,8 +45,7 @@ fn per_sample(c: &mut Criterion) {
             h.to_xyz(light.sample(&h) * surface.sample(&h))
         })
     });
-    let (dl, ds, dobs) =
-        (DenseSpectrum::<f32>::new(light), DenseSpectrum::<f32>::new(surface), DenseObserver::<f32>::new());
+    let (dl, ds, dobs) = (DenseSpectrum::new(light), DenseSpectrum::new(surface), DenseObserver::new());
     group.bench_function("hero K=4 f32 over dense tables, one sample", |b| {
         b.iter(|| {
             let h = HeroSample::<4, f32>::with_observer(black_box(next_u()) as f32, &dobs);
@@ -136,7 +135,7 @@ fn evaluating(c: &mut Criterion) {
     use speclab::color::rgb_table::RgbTable;
     let h = HeroSample::<4>::new(0.3);
     let patch = &data::patches::H4;
-    let dense = DenseSpectrum::<f64>::new(patch);
+    let dense = DenseSpectrum::new(patch);
     let rgb = LinearSrgb::from([0.6, 0.3, 0.1]);
     let albedo = RgbAlbedo::new(rgb).expect("an albedo");
     let table = RgbTable::srgb();

@@ -7,8 +7,8 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use speclab::sampling::buckets::BucketRule;
-use speclab::study::evaluate::method::Method;
-use speclab::study::planning::chart::Point;
+use speclab_study::evaluate::method::Method;
+use speclab_study::planning::chart::Point;
 
 /// Panel and legend sizes, px.
 const PANEL: (u32, u32) = (620, 560);

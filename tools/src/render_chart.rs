@@ -9,59 +9,21 @@ use plotters::prelude::*;
 
 use crate::chart::short;
 
-/// One survey row: scene, way, paths per pixel, ns per path, ΔE00 mean,
-/// 95th percentile, maximum.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Row {
-    pub scene: String,
-    pub way: String,
-    pub spp: usize,
-    pub ns_per_path: f64,
-    pub de00: [f64; 3],
+pub use speclab_study::render::survey::{Row, parse};
+
+/// The curve a row belongs to: fitted rules of every M make one, a hero
+/// pdf's counts one.
+fn curve_of(row: &Row) -> &str {
+    row.way.split(" M=").next().unwrap_or(&row.way)
 }
 
-impl Row {
-    /// Time per pixel, ns (one thread).
-    pub fn ns_per_pixel(&self) -> f64 {
-        self.ns_per_path * self.spp as f64
+/// The label beside a row's point: M for fitted rules, the count for hero.
+fn label(row: &Row) -> String {
+    match row.way.split_once(" M=") {
+        Some((_, m)) => format!("M{m}"),
+        None if row.way == "rgb" => "rgb".into(),
+        None => format!("{}", row.spp),
     }
-
-    /// The curve the row belongs to: fitted rules of every M make one, a
-    /// hero pdf's counts one.
-    fn curve(&self) -> &str {
-        self.way.split(" M=").next().unwrap_or(&self.way)
-    }
-
-    /// The label beside the point: M for fitted rules, the count for hero.
-    fn label(&self) -> String {
-        match self.way.split_once(" M=") {
-            Some((_, m)) => format!("M{m}"),
-            None if self.way == "rgb" => "rgb".into(),
-            None => format!("{}", self.spp),
-        }
-    }
-}
-
-/// The rows of the survey's CSV; an error names the line and what was
-/// expected there.
-pub fn parse(csv: &str) -> Result<Vec<Row>, String> {
-    let mut rows = Vec::new();
-    for (i, line) in csv.lines().enumerate().skip(1).filter(|(_, l)| !l.trim().is_empty()) {
-        let at = |what: &str| format!("line {}: expected {what}, found {line:?}", i + 1);
-        let f: Vec<&str> = line.split(',').collect();
-        if f.len() != 7 {
-            return Err(at("7 fields (scene,way,spp,ns_per_path,de00_mean,de00_p95,de00_max)"));
-        }
-        let number = |s: &str| s.parse::<f64>().ok().filter(|v| v.is_finite() && *v >= 0.0);
-        let (Some(spp), Some(ns)) = (f[2].parse().ok(), number(f[3])) else {
-            return Err(at("a path count and a time"));
-        };
-        let (Some(mean), Some(p95), Some(max)) = (number(f[4]), number(f[5]), number(f[6])) else {
-            return Err(at("three ΔE00 values"));
-        };
-        rows.push(Row { scene: f[0].into(), way: f[1].into(), spp, ns_per_path: ns, de00: [mean, p95, max] });
-    }
-    Ok(rows)
 }
 
 /// Panel size, px.
@@ -89,7 +51,7 @@ fn order<'a>(items: impl Iterator<Item = &'a str>) -> Vec<&'a str> {
 /// The whole picture as SVG text: three panels to a row.
 pub fn svg(rows: &[Row]) -> Result<String, String> {
     let scenes = order(rows.iter().map(|r| r.scene.as_str()));
-    let curves = order(rows.iter().map(Row::curve));
+    let curves = order(rows.iter().map(curve_of));
     let columns = scenes.len().clamp(1, 3);
     let lines = scenes.len().div_ceil(columns).max(1);
     let size = (PANEL.0 * columns as u32, 60 + PANEL.1 * lines as u32);
@@ -153,7 +115,7 @@ fn panel<DB: DrawingBackend>(
     }
     for (i, curve) in curves.iter().enumerate() {
         let colour = PALETTE[i % PALETTE.len()];
-        let mine: Vec<&&Row> = rows.iter().filter(|r| r.curve() == *curve).collect();
+        let mine: Vec<&&Row> = rows.iter().filter(|r| curve_of(r) == *curve).collect();
         let at = |r: &Row, k: usize| (r.ns_per_pixel(), r.de00[k].max(y0));
         chart
             .draw_series(LineSeries::new(mine.iter().map(|r| at(r, 1)), colour.stroke_width(2)))?
@@ -166,7 +128,7 @@ fn panel<DB: DrawingBackend>(
         let font = ("sans-serif", 12).into_font().color(&colour);
         let labels = mine
             .iter()
-            .map(|r| Text::new(r.label(), (r.ns_per_pixel() * 1.06, r.de00[1].max(y0) * 1.05), font.clone()));
+            .map(|r| Text::new(label(r), (r.ns_per_pixel() * 1.06, r.de00[1].max(y0) * 1.05), font.clone()));
         chart.draw_series(labels)?;
     }
     chart

@@ -3,10 +3,10 @@
 
 use std::num::NonZeroUsize;
 
-use speclab::study::evaluate::method::Method;
-use speclab::study::evaluate::scene::{Depth, builtin_lights, builtin_surfaces};
-use speclab::study::planning::chart::{self, Point};
-use speclab::study::planning::cost::Cost;
+use speclab_study::evaluate::method::Method;
+use speclab_study::evaluate::scene::{Depth, builtin_lights, builtin_surfaces};
+use speclab_study::planning::chart::{self, Point};
+use speclab_study::planning::cost::Cost;
 use speclab_tools::chart as draw;
 
 /// Real points for the three lights (the reference and both bucket rules,
@@ -16,7 +16,7 @@ fn points() -> Vec<Point> {
     let surfaces = &builtin_surfaces()[..2];
     let methods = [Method::Reference, Method::CENTER, Method::BOX];
     let trials = NonZeroUsize::new(2).unwrap();
-    let cost = |c: speclab::study::planning::cost::Config| {
+    let cost = |c: speclab_study::planning::cost::Config| {
         Ok(Cost { per_estimate_ns: 10.0 + c.count.get() as f64, preparation_ns: 1.0 })
     };
     builtin_lights()

@@ -8,7 +8,7 @@
 //! by quadrature, fitted per scene. [`Rule::fit`] chooses the
 //! wavelengths and weights that reproduce, by weighted least squares, the
 //! exact XYZ of each light times each reflectance of a smooth prior
-//! ([`super::prior`]; see `problem.rs` for the weighting and the anchors,
+//! (`prior.rs`; see `problem.rs` for the weighting and the anchors,
 //! `search.rs` for the search). The weights apply to the product, so one rule serves every
 //! intensity of its lights and every path through the scene.
 //!
@@ -50,29 +50,14 @@ use crate::spectrum::{LAMBDA_MIN, Spectrum};
 /// its lights and of the prior's mean reflectance, relative (tested).
 pub const ANCHOR_TOLERANCE: f64 = 1e-3;
 
-/// The part of a fit that depends on the lights alone (the normal
-/// equations over the prior): build it once to fit several M.
-pub struct FitProblem(Problem);
+/// The part of a fit that depends on the lights alone: now
+/// [`FittedRules`], whose `rule(m)` keeps each M it fits.
+#[deprecated(since = "0.2.0", note = "use `FittedRules::new(lights)` and `.rule(m)`")]
+pub type FitProblem = FittedRules;
 
-impl std::fmt::Debug for FitProblem {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("FitProblem").finish_non_exhaustive()
-    }
-}
-
-impl FitProblem {
-    /// The problem for `lights`; an [`Error::NoMass`] as in
-    /// [`Rule::fit`].
-    pub fn new(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
-        Problem::new(lights).map(FitProblem)
-    }
-
-    /// The rule of `m` wavelengths, `m` clamped into 1 ..= [`MAX_M`].
-    #[must_use]
-    pub fn rule(&self, m: usize) -> Rule {
-        let mut rules = fit(&self.0, m);
-        rules.swap_remove(0)
-    }
+/// The lights of a list, as the fit takes them.
+fn as_dyn<S: Spectrum>(lights: &[S]) -> Vec<&dyn Spectrum> {
+    lights.iter().map(|l| l as &dyn Spectrum).collect()
 }
 
 /// The rules of a problem's groups at `m` (clamped into 1 ..= MAX_M): one
@@ -85,12 +70,14 @@ fn fit(problem: &Problem, m: usize) -> Vec<Rule> {
 
 impl Rule {
     /// The rule of `m` wavelengths fitted to `lights` (one to a few; the
-    /// scene's). An [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`]; an
+    /// scene's: any slice of spectra, `&[&dyn Spectrum]` for lights of
+    /// mixed kinds). An [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`]; an
     /// [`Error::NoMass`] for no lights or one whose white is not positive
-    /// in X, Y and Z.
-    pub fn fit(lights: &[&dyn Spectrum], m: usize) -> Result<Rule, Error> {
+    /// in X, Y and Z. To fit several M to the same lights, build
+    /// [`FittedRules`] once.
+    pub fn fit<S: Spectrum>(lights: &[S], m: usize) -> Result<Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(FitProblem::new(lights)?.rule(m))
+        Ok(fit(&Problem::new(&as_dyn(lights))?, m).swap_remove(0))
     }
 
     /// One rule per light, all at the same `m` wavelengths, each with
@@ -119,22 +106,25 @@ impl Rule {
     /// assert!((own.x - exact.x).abs() < (shared.x - exact.x).abs());
     /// # Ok::<(), speclab::Error>(())
     /// ```
-    pub fn fit_each(lights: &[&dyn Spectrum], m: usize) -> Result<Vec<Rule>, Error> {
+    pub fn fit_each<S: Spectrum>(lights: &[S], m: usize) -> Result<Vec<Rule>, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(fit(&Problem::each(lights)?, m))
+        Ok(fit(&Problem::each(&as_dyn(lights))?, m))
     }
 }
 
-/// The rules fitted to one light, every M fitted once: kept by the light
-/// if it has a [`Cache`](crate::spectrum::Cache), so that asking again
-/// (another M, another surface, another trial) costs a lookup.
+/// The rules fitted to a scene's lights, each M fitted on first use and
+/// kept: the part of a fit that depends on the lights alone (the normal
+/// equations over the prior, tens of milliseconds) is built once, so that
+/// asking again (another M, another surface, another trial) costs a
+/// lookup. Clones share what is kept.
 ///
 /// ```
 /// use speclab::data::lights;
-/// use speclab::sampling::fitted::FittedRules;
+/// use speclab::sampling::{fitted::FittedRules, rule::Rule};
 /// let f11 = FittedRules::of(&lights::F11)?;
 /// assert_eq!(f11.rule(10)?.m(), 10);
-/// assert!(std::ptr::eq(f11.rule(10)?, FittedRules::of(&lights::F11)?.rule(10)?)); // kept
+/// assert!(std::ptr::eq(f11.rule(10)?, f11.clone().rule(10)?)); // kept, and shared
+/// assert_eq!(f11.rule(6)?, &Rule::fit(&[&lights::F11], 6)?);
 /// # Ok::<(), speclab::Error>(())
 /// ```
 #[derive(Clone)]
@@ -147,31 +137,64 @@ impl std::fmt::Debug for FittedRules {
     }
 }
 
-/// A light's fit problem and its rules by M.
+/// A fit problem and its rules by M.
 struct Fits {
-    problem: FitProblem,
+    problem: Problem,
     rules: [OnceLock<Rule>; MAX_M],
 }
 
 impl FittedRules {
-    /// The rules of `light` (the light's own, if it keeps a cache); an
-    /// [`Error::NoMass`] as in [`Rule::fit`].
+    /// The rules of `lights` (any slice of spectra); an [`Error::NoMass`]
+    /// as in [`Rule::fit`].
+    pub fn new<S: Spectrum>(lights: &[S]) -> Result<Self, Error> {
+        let problem = Problem::new(&as_dyn(lights))?;
+        Ok(FittedRules(Arc::new(Fits { problem, rules: [const { OnceLock::new() }; MAX_M] })))
+    }
+
+    /// The rules of one light: [`FittedRules::new`]`(&[light])`.
     pub fn of(light: &(impl Spectrum + ?Sized)) -> Result<Self, Error> {
-        let make = || {
-            FitProblem::new(&[&light])
-                .map(|problem| Fits { problem, rules: [const { OnceLock::new() }; MAX_M] })
-        };
-        match light.cache() {
-            Some(cache) => cache.derived(0, make).map(FittedRules),
-            None => make().map(|f| FittedRules(Arc::new(f))),
-        }
+        Self::new(&[&light as &dyn Spectrum])
     }
 
     /// The rule of `m` wavelengths, fitted on first use: the same rule as
-    /// [`Rule::fit`]`(&[light], m)`. An [`Error::Count`] unless
+    /// [`Rule::fit`]`(lights, m)`. An [`Error::Count`] unless
     /// `1 ≤ m ≤` [`MAX_M`].
     pub fn rule(&self, m: usize) -> Result<&Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(self.0.rules[m - 1].get_or_init(|| self.0.problem.rule(m)))
+        Ok(self.0.rules[m - 1].get_or_init(|| fit(&self.0.problem, m).swap_remove(0)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{ANCHOR_TOLERANCE, FittedRules};
+    use crate::data::Light;
+    use crate::sampling::prior::PriorMean;
+    use crate::sampling::reference;
+
+    /// Each rule reproduces its anchors to [`ANCHOR_TOLERANCE`]: the
+    /// perfect white under its light, and the prior's mean reflectance.
+    #[test]
+    fn anchors_are_reproduced() {
+        let mut worst = 0.0f64;
+        for light in Light::APPENDIX.map(|l| l.spectrum()) {
+            let rules = FittedRules::of(light).unwrap();
+            for m in [6, 10, 16, 32] {
+                let rule = rules.rule(m).unwrap();
+                for (got, want) in [
+                    (rule.xyz_of_product(&[light]), reference::white(light)),
+                    (
+                        rule.xyz_of_product(&[light, &PriorMean]),
+                        reference::xyz_of_product(&[light, &PriorMean]),
+                    ),
+                ] {
+                    let (g, w) = (got.to_array(), want.to_array());
+                    let scale = w.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                    worst =
+                        worst.max(g.iter().zip(w).map(|(a, b)| (a - b).abs() / scale).fold(0.0, f64::max));
+                }
+            }
+        }
+        assert!(worst <= ANCHOR_TOLERANCE, "{worst}");
     }
 }

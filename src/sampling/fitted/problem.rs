@@ -1,7 +1,7 @@
 //! The least-squares problem behind [`Rule::fit`](crate::sampling::rule::Rule::fit): choose
 //! M of the candidate wavelengths (every nm from 380 to 730) and per
 //! channel the weights that best reproduce the exact XYZ of light ×
-//! reflectance over the prior ([`crate::sampling::prior`]).
+//! reflectance over the prior (`prior.rs`).
 //!
 //! Rows are (light, path) pairs, a path being one to four of the prior's
 //! reflectances multiplied (`prior::paths`): the row's values are

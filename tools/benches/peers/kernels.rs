@@ -112,12 +112,12 @@ pub fn speclab_hero<const K: usize, T: Float>(
 /// precision `T`: the mean XYZ of `n` hero samples.
 #[inline(never)]
 pub fn speclab_dense_hero<T: Float>(
-    light: &DenseSpectrum<T>,
-    surface: &DenseSpectrum<T>,
+    light: &DenseSpectrum,
+    surface: &DenseSpectrum,
     n: usize,
     rng: &mut XorShift32,
 ) -> Xyz {
-    let observer = DenseObserver::<T>::new();
+    let observer = DenseObserver::new();
     let mut sum = Xyz::ZERO;
     for _ in 0..n {
         let u = T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));

@@ -22,9 +22,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use speclab::Role;
-use speclab::study::evaluate::scene::{self, Choice, Depth, Named};
-use speclab::study::planning::chart::{self, Point};
-use speclab::study::present::report;
+use speclab_cli::report;
+use speclab_study::evaluate::scene::{self, Choice, Depth, Named};
+use speclab_study::planning::chart::{self, Point};
 use speclab_tools::chart as draw;
 
 const USAGE: &str = "\
@@ -70,7 +70,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
 }
 
 /// The lights asked for: every built-in one for none or `all`.
-fn lights(names: &[String]) -> Result<Vec<Named>, speclab::study::StudyError> {
+fn lights(names: &[String]) -> Result<Vec<Named>, speclab_study::StudyError> {
     if names.is_empty() || names.iter().any(|n| n.eq_ignore_ascii_case("all")) {
         return Ok(scene::builtin_lights());
     }
@@ -78,7 +78,7 @@ fn lights(names: &[String]) -> Result<Vec<Named>, speclab::study::StudyError> {
 }
 
 /// Every light's points, in the order of the lights.
-fn points(args: &Args) -> Result<Vec<Point>, speclab::study::StudyError> {
+fn points(args: &Args) -> Result<Vec<Point>, speclab_study::StudyError> {
     let surfaces = scene::builtin_surfaces();
     let mut all = Vec::new();
     for light in lights(&args.lights)? {

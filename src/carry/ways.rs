@@ -1,0 +1,209 @@
+//! The three ways of carrying colour: [`Hero`], [`Fitted`], [`Rgb`].
+
+use std::marker::PhantomData;
+
+use crate::carry::Carry;
+use crate::color::upsample::RgbSpace;
+use crate::color::{LinearSrgb, Xyz};
+use crate::error::Error;
+use crate::sampling::pdf::WavelengthPdf;
+use crate::sampling::reference;
+use crate::sampling::rule::Rule;
+use crate::sampling::{Emission, HeroSample, SampledWavelengths};
+use crate::spectrum::observer::Y_BAR_INTEGRAL;
+use crate::spectrum::{Float, Observer, SampledSpectrum, Spectrum};
+
+/// Hero wavelengths (K = 4) drawn per path from `pdf` and weighted by
+/// `observer`; the lights and surfaces evaluated at them at every vertex,
+/// in precision `T` (`f64` unless [`Hero::precision`] says otherwise).
+#[derive(Clone, Debug)]
+pub struct Hero<L, S, O, P, T = f64> {
+    /// The lights, numbered in order.
+    pub lights: Vec<L>,
+    /// The surfaces' albedos, numbered in order.
+    pub surfaces: Vec<S>,
+    /// The observer the weights come from (`DenseObserver` for the fast
+    /// path, `Cie1931` for the exact one).
+    pub observer: O,
+    /// The density the wavelengths are drawn from.
+    pub pdf: P,
+    precision: PhantomData<T>,
+}
+
+impl<L, S, O, P> Hero<L, S, O, P, f64> {
+    /// Hero wavelengths from `pdf`, weighted by `observer`, in `f64`.
+    pub fn new(lights: Vec<L>, surfaces: Vec<S>, observer: O, pdf: P) -> Self {
+        Hero { lights, surfaces, observer, pdf, precision: PhantomData }
+    }
+}
+
+impl<L, S, O, P, T> Hero<L, S, O, P, T> {
+    /// The same, with per-sample values in precision `U` (`f32` for a
+    /// renderer computing in single precision).
+    #[must_use]
+    pub fn precision<U: Float>(self) -> Hero<L, S, O, P, U> {
+        let Hero { lights, surfaces, observer, pdf, .. } = self;
+        Hero { lights, surfaces, observer, pdf, precision: PhantomData }
+    }
+}
+
+impl<L: Spectrum, S: Spectrum, O: Observer, P: WavelengthPdf, T: Float> Carry for Hero<L, S, O, P, T> {
+    /// The wavelengths and their weights: one value per path.
+    type Path = HeroSample<4, T>;
+    type Value = SampledSpectrum<4, T>;
+
+    #[inline]
+    fn path(&self, u: f64) -> Self::Path {
+        HeroSample::from_pdf_with(T::from_f64(u), &self.pdf, &self.observer)
+    }
+
+    fn one(&self) -> Self::Value {
+        SampledSpectrum::splat(T::ONE)
+    }
+
+    #[inline]
+    fn scale(&self, v: Self::Value, s: f64) -> Self::Value {
+        v * T::from_f64(s)
+    }
+
+    #[inline]
+    fn emitted(&self, h: &Self::Path, light: usize, beta: Self::Value) -> Xyz {
+        h.to_xyz(beta * h.sample(&self.lights[light]))
+    }
+
+    #[inline]
+    fn albedo(&self, h: &Self::Path, surface: usize) -> Self::Value {
+        h.sample(&self.surfaces[surface])
+    }
+
+    /// `y(β)` over ∫ȳ ([`Y_BAR_INTEGRAL`]): for a white β, an estimate of 1.
+    #[inline]
+    fn luminance(&self, h: &Self::Path, beta: Self::Value) -> f64 {
+        h.y(beta).to_f64() * (1.0 / Y_BAR_INTEGRAL)
+    }
+}
+
+/// Rules fitted to the scene's lights, one per light at the same M
+/// wavelengths (`Rule::fit_each`), in `CAP` lanes (CAP ≥ M: the lanes
+/// beyond M weigh nothing; [`with_lanes`](super::with_lanes) picks CAP
+/// from M); every surface evaluated at the wavelengths once, and each
+/// light's emission folded into its own rule's XYZ weights.
+#[derive(Clone, Debug)]
+pub struct Fitted<const CAP: usize, T: Float = f64> {
+    /// The luminance weights (the first light's rule's).
+    pub y: SampledSpectrum<CAP, T>,
+    /// Each light's emission times its rule's weights.
+    pub lights: Vec<Emission<CAP, T>>,
+    /// Each surface's values at the wavelengths.
+    pub surfaces: Vec<SampledSpectrum<CAP, T>>,
+}
+
+impl<const CAP: usize, T: Float> Fitted<CAP, T> {
+    /// The scene's spectra at the rules' wavelengths (`rules[i]` for light
+    /// `i`). An [`Error::NoMass`] for no rules; an [`Error::Count`] for
+    /// a rule larger than `CAP`.
+    pub fn new(rules: &[Rule], lights: &[impl Spectrum], surfaces: &[impl Spectrum]) -> Result<Self, Error> {
+        let each: Vec<SampledWavelengths<CAP, T>> =
+            rules.iter().map(Rule::wavelengths).collect::<Result<_, _>>()?;
+        let at = each.first().ok_or(Error::NoMass)?;
+        Ok(Fitted {
+            y: at.y_weights(),
+            lights: each.iter().zip(lights).map(|(w, l)| w.emission(l)).collect(),
+            surfaces: surfaces.iter().map(|s| at.sample(s)).collect(),
+        })
+    }
+}
+
+impl<const CAP: usize, T: Float> Carry for Fitted<CAP, T> {
+    /// Nothing per path: the wavelengths are the rules'.
+    type Path = ();
+    type Value = SampledSpectrum<CAP, T>;
+
+    fn path(&self, _u: f64) {}
+
+    fn one(&self) -> Self::Value {
+        SampledSpectrum::splat(T::ONE)
+    }
+
+    #[inline]
+    fn scale(&self, v: Self::Value, s: f64) -> Self::Value {
+        v * T::from_f64(s)
+    }
+
+    #[inline]
+    fn emitted(&self, _path: &(), light: usize, beta: Self::Value) -> Xyz {
+        self.lights[light].xyz(beta)
+    }
+
+    #[inline]
+    fn albedo(&self, _path: &(), surface: usize) -> Self::Value {
+        self.surfaces[surface]
+    }
+
+    /// `β·w_Y` with the first rule's weights, over ∫ȳ ([`Y_BAR_INTEGRAL`]).
+    /// A fitted rule's luminance weights need not sum to ∫ȳ (under F11 at
+    /// M = 10 they sum to about 77): a white β then reads below 1.
+    #[inline]
+    fn luminance(&self, _path: &(), beta: Self::Value) -> f64 {
+        beta.dot(&self.y).to_f64() * (1.0 / Y_BAR_INTEGRAL)
+    }
+}
+
+/// Linear sRGB triples: a renderer without spectra.
+#[derive(Clone, Debug)]
+pub struct Rgb {
+    /// Each light's colour.
+    pub lights: Vec<LinearSrgb>,
+    /// Each surface's albedo.
+    pub surfaces: Vec<LinearSrgb>,
+    /// The space the triples are in.
+    pub space: &'static RgbSpace,
+}
+
+impl Rgb {
+    /// Each light as its linear sRGB colour (its white's XYZ, in the
+    /// light's own units, negatives clipped), each surface as its linear
+    /// sRGB albedo under D65 clipped to [0, 1] (an RGB renderer's materials
+    /// hold nothing else; unclipped, the products of out-of-gamut
+    /// surfaces' negative components along a path go negative).
+    pub fn new(lights: &[impl Spectrum], surfaces: &[impl Spectrum]) -> Self {
+        let space = RgbSpace::srgb();
+        Rgb {
+            lights: lights.iter().map(|l| space.rgb(reference::white(l)).map(|c| c.max(0.0))).collect(),
+            surfaces: surfaces.iter().map(|s| space.rgb_of(s).map(|c| c.clamp(0.0, 1.0))).collect(),
+            space,
+        }
+    }
+}
+
+impl Carry for Rgb {
+    type Path = ();
+    type Value = LinearSrgb;
+
+    fn path(&self, _u: f64) {}
+
+    fn one(&self) -> LinearSrgb {
+        LinearSrgb::new(1.0, 1.0, 1.0)
+    }
+
+    #[inline]
+    fn scale(&self, v: LinearSrgb, s: f64) -> LinearSrgb {
+        v * s
+    }
+
+    #[inline]
+    fn emitted(&self, _path: &(), light: usize, beta: LinearSrgb) -> Xyz {
+        self.space.xyz(beta * self.lights[light])
+    }
+
+    #[inline]
+    fn albedo(&self, _path: &(), surface: usize) -> LinearSrgb {
+        self.surfaces[surface]
+    }
+
+    /// The throughput's Y (a white β has Y = 1).
+    #[inline]
+    fn luminance(&self, _path: &(), beta: LinearSrgb) -> f64 {
+        self.space.xyz(beta).y
+    }
+}

@@ -1,0 +1,12 @@
+//! The study's tests: the planner's choices, depths,
+//! statistics in units of their standard error (unbiasedness, stability
+//! where each method fails), thread safety, names, finite numbers.
+
+mod depth;
+mod finite;
+mod names;
+mod plan;
+mod stability;
+mod threads;
+mod unbiased;
+mod viewing;

@@ -1,0 +1,13 @@
+//! The core's public API as its users write it: a renderer's per-sample
+//! loop (no allocation on it), the types' sizes and traits, names in any
+//! case, errors that name the place, a downstream build script, and the
+//! fuzz target's saved inputs.
+
+mod alloc;
+mod build_data;
+mod fuzz_body;
+mod fuzz_regressions;
+mod input_errors;
+mod names;
+mod renderer_api;
+mod types;

@@ -1,0 +1,66 @@
+//! Named choices read and write the names used on command lines, in tables
+//! and in CSV (`Display` and `FromStr`, any case), and an unknown name is an
+//! error listing the names that exist (or, for long lists, the nearest).
+
+use std::fmt::Display;
+use std::str::FromStr;
+
+use speclab::Error;
+use speclab::color::GamutMap;
+use speclab::data::{Light, Patch};
+use speclab::sampling::buckets::BucketRule;
+use speclab::sampling::strata::Strata;
+
+/// Every choice's name reads back as the choice, in any case; names are
+/// distinct; an unknown name lists them all.
+fn round_trip<T>(all: &[T], names: &[&str], what: &str)
+where
+    T: Copy + PartialEq + std::fmt::Debug + Display + FromStr<Err = Error>,
+{
+    let shown: Vec<String> = all.iter().map(T::to_string).collect();
+    assert_eq!(shown, names, "{what}");
+    for (choice, name) in all.iter().zip(names) {
+        assert_eq!(name.parse::<T>().unwrap(), *choice);
+        assert_eq!(name.to_uppercase().parse::<T>().unwrap(), *choice);
+    }
+    let err = "nonsense".parse::<T>().unwrap_err().to_string();
+    if names.len() <= 12 {
+        // Every name listed, in order (the exact wording: `strata_error`).
+        let listed = err
+            .strip_prefix(&format!("expected {what} ("))
+            .and_then(|e| e.strip_suffix("), found \"nonsense\""));
+        let listed = listed.unwrap_or_else(|| panic!("{err}"));
+        let mut at = 0;
+        for name in names {
+            at += listed[at..].find(name).unwrap_or_else(|| panic!("{name} in {err}")) + name.len();
+        }
+    } else {
+        let count = format!("; {} names in all), found \"nonsense\"", names.len());
+        assert!(err.starts_with(&format!("expected {what} (nearest: ")) && err.ends_with(&count), "{err}");
+    }
+    assert!("".parse::<T>().is_err());
+}
+
+/// The message in full, for one list.
+#[test]
+fn strata_error() {
+    let err = "nonsense".parse::<Strata>().unwrap_err().to_string();
+    assert_eq!(err, "expected a strata (none, jitter or kronecker), found \"nonsense\"");
+}
+
+#[test]
+fn core_choices() {
+    let lights: Vec<Light> = Light::ALL.to_vec();
+    round_trip(&lights, &speclab::data::lights::NAMES, "a built-in light");
+    assert_eq!(Light::APPENDIX.map(|l| l.to_string()), ["A", "D65", "F11"]);
+    round_trip(&Patch::ALL, &["E2", "F4", "G4", "H4", "J4", "A1"], "a built-in patch");
+    round_trip(&Strata::ALL, &["none", "jitter", "kronecker"], "a strata");
+    round_trip(&GamutMap::ALL, &["clip", "chroma"], "a gamut map");
+    round_trip(&BucketRule::ALL, &["center", "box"], "a bucket rule");
+}
+
+#[test]
+fn pdf_choices() {
+    use speclab::sampling::choice::PdfKind;
+    round_trip(&PdfKind::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
+}

@@ -1,0 +1,15 @@
+//! Properties of the core that hold for every input: energy conservation,
+//! finite results, no panics, exactness of each fast path against the slow
+//! one, pdfs that integrate to 1 and are sampled as they say, dense tables
+//! within their stated error, round trips through RGB.
+
+mod dense;
+mod energy;
+mod finite;
+mod fitted;
+mod no_panic;
+mod pdfs;
+mod prepared;
+mod regular;
+mod spectra;
+mod upsample;

@@ -1,0 +1,194 @@
+//! No input through the public API panics: every call returns a value or an
+//! error, as documented. Arbitrary text goes to every parser, arbitrary
+//! floats (NaN, ±∞, negative, huge) to every constructor and evaluator.
+
+use std::num::NonZeroUsize;
+
+use proptest::prelude::*;
+use rand::SeedableRng;
+use speclab::io::{Format, Load};
+use speclab::sampling::buckets::BucketRule;
+use speclab::sampling::rule::{MAX_M, Rule};
+use speclab::sampling::{hero, reference};
+use speclab::{BoxAverage, HeroSample, Interpolation, RegularSpectrum, Role, TabulatedSpectrum, data};
+use speclab_tables::{brace, columns, json, read};
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        Just(f64::NAN),
+        Just(f64::INFINITY),
+        Just(f64::NEG_INFINITY),
+        Just(-0.0),
+        Just(f64::MAX),
+        Just(f64::MIN_POSITIVE),
+        any::<f64>(),
+        -1e3..1e3f64,
+        350.0..800.0f64,
+    ]
+}
+
+fn role() -> impl Strategy<Value = Role> {
+    prop_oneof![Just(Role::Light), Just(Role::Reflectance), Just(Role::Observer)]
+}
+
+/// Text that is often close to valid: pieces of the three grammars.
+fn spectrum_text() -> impl Strategy<Value = String> {
+    let piece = prop_oneof![
+        Just("{".to_string()),
+        Just("}".to_string()),
+        Just(", ".to_string()),
+        Just("\n".to_string()),
+        Just("\"wavelengths\": [".to_string()),
+        Just("\"values\": [".to_string()),
+        Just("]".to_string()),
+        Just("# c\n".to_string()),
+        Just("\t".to_string()),
+        "[0-9.eE+-]{1,8}",
+        any::<f64>().prop_map(|x| x.to_string()),
+        "\\PC{0,3}",
+    ];
+    prop::collection::vec(piece, 0..40).prop_map(|v| v.concat())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(512))]
+
+    #[test]
+    fn parsers_never_panic(text in prop_oneof![spectrum_text(), "\\PC*", any::<String>()], role in role()) {
+        let _ = brace::parse_samples(&text, "<string>");
+        let _ = brace::parse_rows::<3>(&text, "<string>", 3);
+        let _ = columns::parse_columns(&text, "<string>");
+        let _ = json::parse_json(&text, "<string>");
+        let _ = read::samples(&text, "<string>", role, role.interpolation(), None);
+        for format in [Format::Brace, Format::Json, Format::Columns] {
+            let _ = Load::new(role).with_format(format).text(&text, "<string>");
+        }
+        if let Ok(s) = Load::new(role).text(&text, "<string>") {
+            // Whatever loads evaluates and integrates without panicking.
+            prop_assert!(s.eval(555.0).is_finite());
+            let _ = s.integral(380.0, 730.0);
+        }
+    }
+
+    #[test]
+    fn constructors_take_any_floats(
+        lambda in prop::collection::vec(any_f64(), 0..12),
+        values in prop::collection::vec(any_f64(), 0..12),
+        role in role(),
+        cubic in any::<bool>(),
+    ) {
+        let interpolation = if cubic { Interpolation::Cubic } else { Interpolation::Linear };
+        if let Ok(s) = TabulatedSpectrum::with_interpolation(lambda.clone(), values.clone(), role, interpolation) {
+            for x in [f64::NAN, f64::NEG_INFINITY, 0.0, 380.0, 555.5, 730.0, 1e300] {
+                let _ = s.eval(x);
+            }
+            let _ = RegularSpectrum::<7, BoxAverage>::box_average(&s).to_xyz();
+            let _ = RegularSpectrum::<7>::center(&s).to_xyz();
+            let _ = reference::xyz(&data::lights::D65, &s);
+            let _ = s.mean(555.0, 555.0);
+        }
+        let mut pdf = values.clone();
+        pdf.resize(4, 1.0);
+        let mut wavelengths = lambda.clone();
+        wavelengths.resize(4, 500.0);
+        let four = |v: &[f64]| [v[0], v[1], v[2], v[3]];
+        if let Ok(h) = HeroSample::from_wavelengths(four(&wavelengths), four(&pdf)) {
+            prop_assert!(h.to_xyz(data::lights::D65.sample(&h)).y.is_finite());
+        }
+    }
+
+    #[test]
+    fn evaluators_take_any_floats(x in any_f64(), u in any_f64(), seed in any::<u64>()) {
+        for s in [&data::lights::F11, &data::patches::G4, &data::cie1931::Z_BAR] {
+            let v = s.eval(x);
+            prop_assert!(v.is_finite() && v >= 0.0);
+        }
+        // Documented: only the fractional part of u counts; non-finite u acts as 0.
+        let h = HeroSample::<4>::new(u);
+        prop_assert!(h.lambda().iter().all(|l| (380.0..=730.0).contains(l)), "{:?}", h.lambda());
+        prop_assert!(h.to_xyz(data::lights::F11.sample(&h) * data::patches::A1.sample(&h)).is_finite());
+        let mut terminated = h;
+        terminated.terminate_secondary();
+        prop_assert!(terminated.to_xyz(data::lights::F11.sample(&h) * data::patches::A1.sample(&h)).is_finite());
+        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+        for k in [0, 1, 4, 5, hero::MAX_WIDTH, hero::MAX_WIDTH + 1, usize::MAX] {
+            let (pdf, strata) = (speclab::sampling::pdf::Uniform, speclab::sampling::strata::Strata::None);
+            let result = hero::estimate_width(k, &data::lights::A, &data::patches::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
+            prop_assert_eq!(result.is_ok(), (1..=hero::MAX_WIDTH).contains(&k));
+        }
+    }
+
+    #[test]
+    fn bucket_counts_and_huge_values(m in any::<usize>(), scale in any_f64()) {
+        let m = NonZeroUsize::new(m).unwrap_or(NonZeroUsize::MIN);
+        for rule in BucketRule::ALL {
+            let result = Rule::buckets(m.get(), rule).map(|b| b.xyz(&data::lights::A, &data::patches::E2));
+            prop_assert_eq!(result.is_ok(), m.get() <= MAX_M);
+            if let Ok(xyz) = result {
+                prop_assert!(xyz.is_finite());
+            }
+        }
+        if let Ok(light) = TabulatedSpectrum::new(vec![380.0, 730.0], vec![scale, scale], Role::Light) {
+            let _ = RegularSpectrum::<3>::center(&light).to_xyz();
+            let _ = hero::estimate::<2, _>(&light, &data::patches::A1, NonZeroUsize::MIN, &mut rand::rngs::StdRng::seed_from_u64(1));
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Every pdf maps any number to a wavelength in 380–730 nm, and gives a
+    /// finite, non-negative density and a CDF in [0, 1] at any wavelength.
+    #[test]
+    fn pdfs_take_any_numbers(u in any_f64(), lambda in any_f64(), n in 0..50usize, k in 0..6usize, seed in any::<u64>()) {
+        use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
+        use speclab::sampling::strata::Strata;
+        let binned = speclab::sampling::binned::BinnedPdf::new(&LightPdf::light(&data::lights::F11).expect("bright"), 1 + n).expect("bins");
+        let pdfs: [&dyn WavelengthPdf; 5] = [&Uniform, &Visible, &LightPdf::light(&data::lights::F11).expect("bright"), &LightPdf::balanced(&data::lights::A).expect("bright"), &binned];
+        for p in pdfs {
+            let l = p.sample(u);
+            prop_assert!((380.0..=730.0).contains(&l), "{}", l);
+            let (d, c) = (p.pdf(lambda), p.cdf(lambda).expect("the library's pdfs know their CDF"));
+            prop_assert!(d.is_finite() && d >= 0.0 && (0.0..=1.0).contains(&c), "{} {}", d, c);
+            prop_assert!(HeroSample::<4>::from_pdf(u, p).to_xyz(data::lights::D65.sample(&HeroSample::<4>::new(u))).is_finite());
+        }
+        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+        for strata in Strata::ALL {
+            let points: Vec<f64> = strata.points(n, k, &mut rng).collect();
+            prop_assert_eq!(points.len(), n);
+            prop_assert!(points.iter().all(|u| (0.0..1.0).contains(u)));
+        }
+    }
+
+    /// Preparing a light for any grid, and converting any slice, returns a
+    /// value or an error.
+    #[test]
+    fn prepared_light_takes_anything(
+        grid in prop::collection::vec(any_f64(), 0..12),
+        samples in prop::collection::vec(any_f64(), 0..80),
+        outputs in 0..4usize,
+        cubic in any::<bool>(),
+    ) {
+        let interpolation = if cubic { Interpolation::Cubic } else { Interpolation::Linear };
+        for light in [&data::lights::A, &data::lights::F11] {
+            if let Ok(p) = speclab::sampling::PreparedLight::for_grid(light, &grid, interpolation) {
+                let mut out = vec![speclab::Xyz::ZERO; outputs];
+                if p.batch(&samples, &mut out).is_ok() {
+                    prop_assert!(out.iter().all(|x| x.is_finite()));
+                }
+                let _ = p.xyz_samples(&samples);
+                prop_assert!(p.xyz(&data::patches::G4).is_finite());
+            }
+        }
+    }
+}
+
+#[test]
+fn hero_u_outside_unit_interval_is_documented() {
+    assert_eq!(HeroSample::<4>::new(1.25), HeroSample::<4>::new(0.25));
+    assert_eq!(HeroSample::<4>::new(-0.25), HeroSample::<4>::new(0.75));
+    assert_eq!(HeroSample::<4>::new(f64::NAN), HeroSample::<4>::new(0.0));
+    assert_eq!(HeroSample::<4>::new(f64::INFINITY), HeroSample::<4>::new(0.0));
+    assert_eq!(HeroSample::<1>::new(1.0), HeroSample::<1>::new(0.0));
+}
