@@ -13,7 +13,7 @@
 //! `file:line:column: expected …, found …`.
 //!
 //! In your `Cargo.toml`, this crate is a build-dependency and speclab a
-//! dependency (`default-features = false` is enough). Your `build.rs`:
+//! dependency. Your `build.rs`:
 //!
 //! ```no_run
 //! use speclab_tables::{Codegen, Role};

@@ -9,6 +9,27 @@ use speclab::{Xyz, data};
 /// The pairs are published to four decimals: half a unit in the last place.
 const TOL: f64 = 0.5e-4;
 
+/// Pairs whose hues lie more than 180° apart and sum to 360° or more,
+/// where Sharma, Wu and Dalal's mean hue is `(h₁ + h₂ − 360°)/2`: ΔE00 as
+/// colour-science 0.4.7 computes it (`delta_E_CIE2000`, which follows
+/// their rule; a peer's output, not published truth). palette 0.7's
+/// `Ciede2000` takes `(h₁ + h₂ + 360°)/2` here, a mean hue 360° off, which
+/// changes Δθ's Gaussian: the chart's ΔE00 moved by up to 7e-8 relative
+/// when the study moved from palette to this function, all of it from this
+/// branch (with palette's rule, within 6e-13).
+#[test]
+fn mean_hue_across_zero_follows_sharma() {
+    let peer = [
+        ([50.0, 30.0, -5.3], [50.0, -3.0, 17.0], 33.32116971715344),
+        ([40.0, 10.0, -17.3], [45.0, -5.0, 28.0], 36.33824769318523),
+    ];
+    for (p, q, want) in peer {
+        for de in [ciede2000(p, q), ciede2000(q, p)] {
+            assert!((de - want).abs() <= 1e-12 * want, "{p:?} {q:?}: {de} vs {want}");
+        }
+    }
+}
+
 #[test]
 fn sharma_wu_dalal_pairs() {
     let text = include_str!("../data/ciede2000_sharma2005.csv");
