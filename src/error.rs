@@ -79,6 +79,10 @@ pub enum Error {
         /// The components given.
         rgb: [f64; 3],
     },
+    /// Chromaticities that do not make an RGB space: every primary and the
+    /// white point must be finite with a non-zero y (the white's positive),
+    /// and the primaries must span a space.
+    Primaries,
     /// Dispersion coefficients that do not give a real, finite, positive
     /// refractive index over 380–730 nm.
     Dispersion,
@@ -141,6 +145,11 @@ impl fmt::Display for Error {
                 f,
                 "expected linear sRGB components in [0, 1], found ({}, {}, {})",
                 rgb[0], rgb[1], rgb[2]
+            ),
+            Error::Primaries => write!(
+                f,
+                "expected primaries and a white point of finite chromaticities with non-zero y \
+                 (the white's positive), the primaries spanning a space, found others"
             ),
             Error::Dispersion => write!(
                 f,

@@ -31,10 +31,15 @@ pub fn names_help() -> String {
         let lines: Vec<String> = lines.iter().map(|l| l.join(", ")).collect();
         lines.join(",\n                       ")
     };
+    let pbrt: Vec<&str> = speclab::data::lights::ALIASES.iter().map(|(a, _)| *a).collect();
     format!(
         "built-in names (any case):\n  lights:              {},\n                       \
-         or D and a temperature for CIE daylight (D5000 is 5000 K)\n  surfaces:            {}",
+         or D and a temperature for CIE daylight (D5000 is 5000 K);\n                       \
+         A, D65 and F11 are the assignment's tables (Appendix 2's, 380-780 nm, D65 normalised\n                       \
+         at 460 nm); CIE-A and CIE-D65 are the CIE's, also by pbrt-v4's names:\n                       \
+         {}\n  surfaces:            {}",
         wrap(&speclab::data::lights::NAMES),
+        wrap(&pbrt),
         wrap(&speclab::data::SURFACE_NAMES),
     )
 }

@@ -37,7 +37,7 @@ pub fn write(out: impl Write, image: &Image) -> io::Result<()> {
     writer.finish().map_err(io::Error::other)
 }
 
-/// [`write`] to the file at `path`.
+/// [`write()`] to the file at `path`.
 pub fn write_file(path: &Path, image: &Image) -> io::Result<()> {
     let mut out = BufWriter::new(File::create(path)?);
     write(&mut out, image)?;

@@ -130,7 +130,7 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             Long("threads") => o.threads = parser.value()?.parse_with(|v| positive("thread count", v))?,
             Long("out") => a.out = parser.value()?.into(),
             Short('h') | Long("help") => {
-                println!("{USAGE}\nbuilt-in lights (any case): {}", lights::NAMES.join(", "));
+                println!("{USAGE}\n{}", speclab_cli::args::names_help());
                 std::process::exit(0);
             }
             _ => return Err(arg.unexpected().into()),

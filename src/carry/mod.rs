@@ -83,4 +83,10 @@ pub trait Carry {
     /// The throughput's luminance relative to a white path's (1 for
     /// [`Carry::one`]): what Russian roulette on luminance compares.
     fn luminance(&self, path: &Self::Path, beta: Self::Value) -> f64;
+
+    /// The throughput's largest component over its wavelengths (or
+    /// channels): what pbrt-v4's and Mitsuba 3's Russian roulette compare
+    /// (pbrt-v4 ends a path with probability `max(0, 1 − max β)` and
+    /// divides the survivors' β by `max β`).
+    fn max_component(&self, path: &Self::Path, beta: Self::Value) -> f64;
 }

@@ -3,8 +3,8 @@
 use std::marker::PhantomData;
 
 use crate::carry::Carry;
-use crate::color::upsample::RgbSpace;
-use crate::color::{LinearSrgb, Xyz};
+use crate::color::space::RgbSpace;
+use crate::color::{LinearRgb, Xyz};
 use crate::error::Error;
 use crate::sampling::pdf::WavelengthPdf;
 use crate::sampling::reference;
@@ -81,6 +81,11 @@ impl<L: Spectrum, S: Spectrum, O: Observer, P: WavelengthPdf, T: Float> Carry fo
     fn luminance(&self, h: &Self::Path, beta: Self::Value) -> f64 {
         h.y(beta).to_f64() * (1.0 / Y_BAR_INTEGRAL)
     }
+
+    #[inline]
+    fn max_component(&self, _h: &Self::Path, beta: Self::Value) -> f64 {
+        beta.max_value().to_f64()
+    }
 }
 
 /// Rules fitted to the scene's lights, one per light at the same M
@@ -147,27 +152,38 @@ impl<const CAP: usize, T: Float> Carry for Fitted<CAP, T> {
     fn luminance(&self, _path: &(), beta: Self::Value) -> f64 {
         beta.dot(&self.y).to_f64() * (1.0 / Y_BAR_INTEGRAL)
     }
+
+    /// Over every lane: the lanes beyond the rule's size repeat its last
+    /// wavelength, so they add no larger value.
+    #[inline]
+    fn max_component(&self, _path: &(), beta: Self::Value) -> f64 {
+        beta.max_value().to_f64()
+    }
 }
 
-/// Linear sRGB triples: a renderer without spectra.
+/// Linear RGB triples: a renderer without spectra.
 #[derive(Clone, Debug)]
 pub struct Rgb {
     /// Each light's colour.
-    pub lights: Vec<LinearSrgb>,
+    pub lights: Vec<LinearRgb>,
     /// Each surface's albedo.
-    pub surfaces: Vec<LinearSrgb>,
+    pub surfaces: Vec<LinearRgb>,
     /// The space the triples are in.
     pub space: &'static RgbSpace,
 }
 
 impl Rgb {
-    /// Each light as its linear sRGB colour (its white's XYZ, in the
-    /// light's own units, negatives clipped), each surface as its linear
-    /// sRGB albedo under D65 clipped to [0, 1] (an RGB renderer's materials
-    /// hold nothing else; unclipped, the products of out-of-gamut
-    /// surfaces' negative components along a path go negative).
+    /// [`Rgb::in_space`] in linear sRGB.
     pub fn new(lights: &[impl Spectrum], surfaces: &[impl Spectrum]) -> Self {
-        let space = RgbSpace::srgb();
+        Rgb::in_space(RgbSpace::srgb(), lights, surfaces)
+    }
+
+    /// Each light as its colour in `space` (its white's XYZ, in the light's
+    /// own units, negatives clipped), each surface as its albedo under the
+    /// space's illuminant clipped to [0, 1] (an RGB renderer's materials
+    /// hold nothing else; unclipped, the products of out-of-gamut surfaces'
+    /// negative components along a path go negative).
+    pub fn in_space(space: &'static RgbSpace, lights: &[impl Spectrum], surfaces: &[impl Spectrum]) -> Self {
         Rgb {
             lights: lights.iter().map(|l| space.rgb(reference::white(l)).map(|c| c.max(0.0))).collect(),
             surfaces: surfaces.iter().map(|s| space.rgb_of(s).map(|c| c.clamp(0.0, 1.0))).collect(),
@@ -178,32 +194,37 @@ impl Rgb {
 
 impl Carry for Rgb {
     type Path = ();
-    type Value = LinearSrgb;
+    type Value = LinearRgb;
 
     fn path(&self, _u: f64) {}
 
-    fn one(&self) -> LinearSrgb {
-        LinearSrgb::new(1.0, 1.0, 1.0)
+    fn one(&self) -> LinearRgb {
+        LinearRgb::splat(1.0)
     }
 
     #[inline]
-    fn scale(&self, v: LinearSrgb, s: f64) -> LinearSrgb {
+    fn scale(&self, v: LinearRgb, s: f64) -> LinearRgb {
         v * s
     }
 
     #[inline]
-    fn emitted(&self, _path: &(), light: usize, beta: LinearSrgb) -> Xyz {
+    fn emitted(&self, _path: &(), light: usize, beta: LinearRgb) -> Xyz {
         self.space.xyz(beta * self.lights[light])
     }
 
     #[inline]
-    fn albedo(&self, _path: &(), surface: usize) -> LinearSrgb {
+    fn albedo(&self, _path: &(), surface: usize) -> LinearRgb {
         self.surfaces[surface]
     }
 
     /// The throughput's Y (a white β has Y = 1).
     #[inline]
-    fn luminance(&self, _path: &(), beta: LinearSrgb) -> f64 {
+    fn luminance(&self, _path: &(), beta: LinearRgb) -> f64 {
         self.space.xyz(beta).y
+    }
+
+    #[inline]
+    fn max_component(&self, _path: &(), beta: LinearRgb) -> f64 {
+        beta.max_component()
     }
 }

@@ -4,9 +4,9 @@
 //! ΔE00 ≈ 1 is a just-noticeable difference between two colours side by
 //! side. The formula is CIE 142-2001 as Sharma, Wu and Dalal (2005) state
 //! it, with their conventions where the standard is silent: a colour of
-//! zero chroma has hue 0, the mean hue of such a pair is the sum of the
-//! hues, and the mean hue of a pair more than 180° apart is taken on the
-//! shorter arc, in [0, 360). Checked
+//! zero chroma has hue 0 (its hue then changes nothing), and the mean hue
+//! of a pair more than 180° apart is taken on the shorter arc, in
+//! [0, 360). Checked
 //! against their 34 published test pairs (`tests/truth`). The parametric
 //! factors kL, kC, kH are 1 (reference conditions).
 //!
@@ -36,11 +36,12 @@ pub fn ciede2000(lab1: [f64; 3], lab2: [f64; 3]) -> f64 {
     let (a1, a2) = (a1 * (1.0 + g), a2 * (1.0 + g));
     let (c1, c2) = (a1.hypot(b1), a2.hypot(b2));
     let (h1, h2) = (hue_degrees(b1, a1), hue_degrees(b2, a2));
-    // The differences ΔL′, ΔC′, ΔH′.
-    let neutral = c1 == 0.0 || c2 == 0.0;
+    // The differences ΔL′, ΔC′, ΔH′. Sharma et al. set Δh′ = 0 and h̄′ =
+    // h₁′ + h₂′ when a colour is neutral (C′ = 0); then ΔH′ = 0 whatever
+    // Δh′ is, and h̄′ enters only S_H and R_T, both through ΔH′: those cases
+    // need no branch of their own.
     let dh = h2 - h1;
     let dh = match () {
-        _ if neutral => 0.0,
         _ if dh.abs() <= 180.0 => dh,
         _ if h2 <= h1 => dh + 360.0,
         _ => dh - 360.0,
@@ -49,7 +50,6 @@ pub fn ciede2000(lab1: [f64; 3], lab2: [f64; 3]) -> f64 {
     let d_big_h = 2.0 * (c1 * c2).sqrt() * (dh / 2.0).to_radians().sin();
     // The means L̄′, C̄′, H̄′.
     let h_bar = match () {
-        _ if neutral => h1 + h2,
         _ if (h1 - h2).abs() <= 180.0 => (h1 + h2) / 2.0,
         _ if h1 + h2 < 360.0 => (h1 + h2 + 360.0) / 2.0,
         _ => (h1 + h2 - 360.0) / 2.0,

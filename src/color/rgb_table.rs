@@ -13,28 +13,27 @@
 //! **Cost and storage.** The table is built on first use, in memory
 //! (3 × 64³ × 3 f64: 18.9 MB, as fine as pbrt-v4's and Mitsuba 3's 64³
 //! tables), by fits that start from their neighbours': about 3.4 s
-//! in a release build on two cores. **Accuracy**: the interpolated
+//! in a release build on two cores. Each [`RgbSpace`] keeps its own
+//! ([`RgbSpace::table`]). **Accuracy**: the interpolated
 //! coefficients are not fits; the round trip (albedo, then its colour
 //! under D65) is within ΔE00 0.04 of the colour asked for over a 9³ grid
 //! of albedos, and within 0.32 over 4,000 colours spread through the cube
 //! (mean 0.013; `tests/upsample.rs`).
 //!
 //! ```
-//! use speclab::LinearSrgb;
-//! use speclab::color::{rgb_table::RgbTable, upsample::RgbSpace};
-//! // RgbTable::srgb() is the full table; a coarse one builds in a moment.
+//! use speclab::color::{LinearRgb, rgb_table::RgbTable, space::RgbSpace};
+//! // RgbSpace::srgb().table() is the full table; a coarse one builds in a moment.
 //! let coarse = RgbTable::new(RgbSpace::srgb(), 8);
-//! let rgb = LinearSrgb::new(0.2, 0.5, 0.3);
+//! let rgb = LinearRgb::new(0.2, 0.5, 0.3);
 //! let albedo = coarse.albedo(rgb)?;
 //! assert!(RgbSpace::srgb().rgb_of(&albedo).distance(rgb) < 0.05);
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use std::sync::OnceLock;
-
 use crate::color::RgbAlbedo;
-use crate::color::srgb::LinearSrgb;
-use crate::color::upsample::{RgbSpace, constant};
+use crate::color::rgb::LinearRgb;
+use crate::color::space::RgbSpace;
+use crate::color::upsample::constant;
 use crate::error::Error;
 use crate::spectrum::SigmoidPolynomial;
 
@@ -58,11 +57,11 @@ fn smoothstep(t: f64) -> f64 {
 }
 
 impl RgbTable {
-    /// The table of linear sRGB ([`RgbSpace::srgb`]), built on first use.
+    /// The table of linear sRGB ([`RgbSpace::srgb`]'s), built on first
+    /// use.
     #[must_use]
     pub fn srgb() -> &'static RgbTable {
-        static TABLE: OnceLock<RgbTable> = OnceLock::new();
-        TABLE.get_or_init(|| RgbTable::new(RgbSpace::srgb(), RESOLUTION))
+        RgbSpace::srgb().table()
     }
 
     /// The table of `space` with `resolution` nodes per axis (at least 2).
@@ -86,12 +85,25 @@ impl RgbTable {
 
     /// The albedo of `rgb` (each component in [0, 1]; otherwise an
     /// [`Error::Albedo`]), interpolated from the table.
-    pub fn albedo(&self, rgb: LinearSrgb) -> Result<RgbAlbedo, Error> {
-        let c = rgb.to_array();
+    pub fn albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
+        let c = rgb.into().to_array();
         if !c.iter().all(|v| (0.0..=1.0).contains(v)) {
             return Err(Error::Albedo { rgb: c });
         }
         Ok(RgbAlbedo::from_polynomial(self.lookup(c)))
+    }
+
+    /// `rgb` (negatives and NaN as 0) as `(scale, polynomial)`: twice its
+    /// largest component, and the looked-up polynomial of the colour over
+    /// that (pbrt-v4's scaling for unbounded and illuminant colours).
+    pub(crate) fn split(&self, rgb: LinearRgb) -> (f64, SigmoidPolynomial) {
+        let rgb = rgb.map(|v| if v > 0.0 { v } else { 0.0 });
+        let largest = rgb.max_component();
+        if !(largest > 0.0 && largest.is_finite()) {
+            return (0.0, SigmoidPolynomial::BLACK);
+        }
+        let scale = 2.0 * largest;
+        (scale, self.lookup((rgb / scale).to_array()))
     }
 
     /// The interpolated polynomial of `rgb` in [0, 1]³.
@@ -147,7 +159,7 @@ fn case_table(space: &RgbSpace, z: &[f64], case: usize) -> Vec<[f64; 3]> {
         for j in 0..n {
             for i in 0..n {
                 let start = from.map(|f| out[(f * n + j) * n + i]);
-                out[(k * n + j) * n + i] = space.fit_from(rgb(k, j, i), start).coefficients();
+                out[(k * n + j) * n + i] = space.fit.fit_from(rgb(k, j, i), start).coefficients();
             }
         }
     }

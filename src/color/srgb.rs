@@ -65,7 +65,11 @@ pub struct LinearSrgb {
 }
 
 impl Xyz {
-    /// Linear sRGB by the part D matrix, unclamped.
+    /// Linear sRGB by the part D matrix, unclamped: the assignment's
+    /// conversion, which Appendix 2's numbers use. A renderer's sRGB, the
+    /// matrix derived from IEC 61966-2-1's primaries (as pbrt-v4's
+    /// `ToRGB`), is [`RgbSpace::srgb`](crate::color::RgbSpace::srgb)'s
+    /// `rgb`; the two differ by up to 5e-4.
     #[inline]
     #[must_use]
     pub fn to_linear_srgb(self) -> LinearSrgb {

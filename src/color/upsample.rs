@@ -1,61 +1,63 @@
 //! From an RGB colour to a spectrum: Jakob and Hanika's sigmoid polynomials
-//! (2019), fitted by Gauss–Newton on the CIELAB error under the colour
-//! space's white, with speclab's own observer and integrals.
+//! (2019), fitted by Gauss–Newton on the CIELAB error under a colour
+//! space's illuminant, with speclab's own observer and integrals.
 //!
-//! The colour space ([`RgbSpace::srgb`]) is linear sRGB by the part D matrix
-//! of Appendix 1, lit by D65 as tabulated in `data/` and integrated over
-//! 380–730 nm like every colour here. Its white is that D65's: the matrix
-//! takes it to (0.99996, 1.00019, 0.99947), so the space balances each
-//! channel by that (at most 5e-4) and (1, 1, 1) *is* the perfect white.
+//! A space ([`RgbSpace`]) makes its colours' spectra under its illuminant
+//! (CIE D65 for sRGB, Display P3 and Rec.2020), integrated over 380–730 nm
+//! like every colour here. There the illuminant's white is not exactly the
+//! space's white point, so the fit balances each channel by at most 5e-4:
+//! the perfect reflector *is* `(1, 1, 1)`.
 //!
-//! - [`RgbAlbedo::new`](crate::color::RgbAlbedo::new): a reflectance whose colour under D65 is the given
-//!   linear sRGB (each component in [0, 1]); black and white are the
-//!   constants 0 and 1, exactly.
-//! - [`RgbUnbounded::new`](crate::color::RgbUnbounded::new): any non-negative colour, as twice its largest
-//!   component times the albedo of the colour over that.
-//! - [`RgbIlluminant::new`](crate::color::RgbIlluminant::new): a light: that, times D65 normalised so that
-//!   (1, 1, 1) has the luminance of a constant spectrum of 1.
+//! - [`RgbAlbedo::new`](crate::color::RgbAlbedo::new): a reflectance whose
+//!   colour under D65 is the given linear sRGB (each component in [0, 1]);
+//!   black and white are the constants 0 and 1, exactly. In any space,
+//!   [`RgbSpace::albedo`] looks the colour up in the space's table.
+//! - [`RgbUnbounded`](crate::color::RgbUnbounded): any non-negative colour,
+//!   as twice its largest component times the albedo of the colour over
+//!   that.
+//! - [`RgbIlluminant`](crate::color::RgbIlluminant): a light: that, times
+//!   the space's illuminant normalised so that (1, 1, 1) has the luminance
+//!   of a constant spectrum of 1.
 //!
 //! **The fit.** `Lab(XYZ(c)) − Lab(target)` is driven to zero by Gauss–
 //! Newton steps with the exact Jacobian (halved while they do not reduce
 //! the error), from the flat spectrum of the colour's luminance. XYZ(c) is
-//! D65 × s × c̄ integrated by 4-point Gauss–Legendre on each 5 nm piece.
-//! Colours the direct descent does not reach (the most saturated) are
-//! approached along the line from that grey, each step starting from the
-//! last. Round trip, linear sRGB → albedo → XYZ under D65 (the reference
-//! integral) → linear sRGB: ΔE00 below 0.01 over a 17³ grid
-//! (`tests/upsample.rs`).
+//! illuminant × s × c̄ integrated by 4-point Gauss–Legendre on each 5 nm
+//! piece. Colours the direct descent does not reach (the most saturated)
+//! are approached along the line from that grey, each step starting from
+//! the last. Round trip, linear sRGB → albedo → XYZ under D65 (the
+//! reference integral) → linear sRGB: ΔE00 below 0.01 over a 17³ grid
+//! (`tests/properties/upsample.rs`).
 //!
 //! ```
 //! use speclab::{LinearSrgb, Spectrum};
-//! use speclab::color::upsample::RgbSpace;
-//! use speclab::color::RgbAlbedo;
+//! use speclab::color::{LinearRgb, RgbAlbedo, space::RgbSpace};
 //! let orange = LinearSrgb::new(0.8, 0.35, 0.05);
 //! let albedo = RgbAlbedo::new(orange)?;
 //! let back = RgbSpace::srgb().rgb_of(&albedo);
-//! assert!(back.distance(orange) < 1e-4);
+//! assert!(back.distance(LinearRgb::from(orange)) < 1e-4);
 //! assert!((0.0..=1.0).contains(&albedo.eval(600.0)));
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use std::sync::OnceLock;
-
 use crate::color::lab::{lab, lab_jacobian};
 use crate::color::matrix::{Matrix, inverse, mul};
-use crate::color::srgb::{LinearSrgb, XYZ_TO_SRGB};
+use crate::color::rgb::LinearRgb;
 use crate::color::xyz::Xyz;
-use crate::spectrum::data::lights;
 use crate::spectrum::observer;
 use crate::spectrum::{
     LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, SigmoidPolynomial, Spectrum, TabulatedSpectrum, integrate,
     quadrature,
 };
 
-/// An RGB colour space for upsampling: its illuminant, its white, the
-/// balanced matrices, and the quadrature nodes of `∫ illuminant·s·c̄`.
-#[derive(Clone, Debug)]
-pub struct RgbSpace {
-    illuminant: &'static TabulatedSpectrum,
+pub use crate::color::space::RgbSpace;
+
+/// What a space's colours are fitted with: its illuminant, the
+/// illuminant's white, the balanced matrices, and the quadrature nodes of
+/// `∫ illuminant·s·c̄`.
+#[derive(Clone)]
+pub(crate) struct Fit {
+    pub(crate) illuminant: &'static TabulatedSpectrum,
     /// The illuminant's white, `Y = 1`.
     white: Xyz,
     /// The illuminant's white's Y, as integrated (for normalising).
@@ -67,18 +69,36 @@ pub struct RgbSpace {
 }
 
 impl RgbSpace {
-    /// Linear sRGB (part D matrix) under the tabulated D65, balanced so
-    /// that (1, 1, 1) is D65's white. Made once, on first use.
+    /// The colour of a reflectance under the space's illuminant, white
+    /// `Y = 1`: `∫ L·R·c̄ / ∫ L·ȳ`, integrated as the exact reference
+    /// integrates.
     #[must_use]
-    pub fn srgb() -> &'static RgbSpace {
-        static SRGB: OnceLock<RgbSpace> = OnceLock::new();
-        SRGB.get_or_init(|| RgbSpace::new(&lights::D65, XYZ_TO_SRGB))
+    pub fn albedo_xyz(&self, albedo: &dyn Spectrum) -> Xyz {
+        self.fit.albedo_xyz(albedo)
     }
 
-    fn new(illuminant: &'static TabulatedSpectrum, xyz_to_rgb: Matrix) -> RgbSpace {
+    /// [`RgbSpace::albedo_xyz`] as linear RGB, each channel balanced so
+    /// that the perfect reflector is `(1, 1, 1)` exactly.
+    #[must_use]
+    pub fn rgb_of(&self, albedo: &dyn Spectrum) -> LinearRgb {
+        self.fit.rgb(self.fit.albedo_xyz(albedo))
+    }
+}
+
+impl std::fmt::Debug for Fit {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Fit").field("white", &self.white).finish_non_exhaustive()
+    }
+}
+
+impl Fit {
+    /// The fit for colours whose XYZ → RGB matrix is `xyz_to_rgb`, under
+    /// `illuminant`: the matrix balanced so that the illuminant's white
+    /// (over 380–730 nm) is `(1, 1, 1)`.
+    pub(crate) fn new(illuminant: &'static TabulatedSpectrum, xyz_to_rgb: &Matrix) -> Fit {
         let raw = Xyz::from(integrate::white(illuminant));
         let white = raw / raw.y;
-        let balance = mul(&xyz_to_rgb, white.to_array());
+        let balance = mul(xyz_to_rgb, white.to_array());
         let to_rgb = [0, 1, 2].map(|r| xyz_to_rgb[r].map(|v| v / balance[r]));
         let mut pieces: Vec<f64> = illuminant.breaks().to_vec();
         pieces.extend(observer::CMFS.iter().flat_map(|s| s.breaks().iter().copied()));
@@ -96,38 +116,22 @@ impl RgbSpace {
                 ((lambda - LAMBDA_MIN) / LAMBDA_WIDTH, observer::xyz_bar(lambda).map(|c| c * weight))
             })
             .collect();
-        RgbSpace { illuminant, white, white_y: raw.y, to_rgb, to_xyz: inverse(&to_rgb), nodes }
+        Fit { illuminant, white, white_y: raw.y, to_rgb, to_xyz: inverse(&to_rgb), nodes }
     }
 
-    /// The white, XYZ with `Y = 1`: the illuminant's.
-    #[must_use]
-    pub fn white(&self) -> Xyz {
-        self.white
+    /// Balanced linear RGB of `xyz` (relative to the white's `Y = 1`).
+    pub(crate) fn rgb(&self, xyz: Xyz) -> LinearRgb {
+        LinearRgb::from(mul(&self.to_rgb, xyz.to_array()))
     }
 
-    /// Linear RGB of `xyz` (relative to the white's `Y = 1`).
-    #[must_use]
-    pub fn rgb(&self, xyz: Xyz) -> LinearSrgb {
-        LinearSrgb::from(mul(&self.to_rgb, xyz.to_array()))
-    }
-
-    /// XYZ (white `Y = 1`) of linear `rgb`.
-    #[must_use]
-    pub fn xyz(&self, rgb: LinearSrgb) -> Xyz {
+    /// XYZ (white `Y = 1`) of balanced linear `rgb`.
+    pub(crate) fn xyz(&self, rgb: LinearRgb) -> Xyz {
         Xyz::from(mul(&self.to_xyz, rgb.to_array()))
     }
 
-    /// The colour of a reflectance under the illuminant, white `Y = 1`:
-    /// `∫ L·R·c̄ / ∫ L·ȳ`, integrated as the exact reference integrates.
-    #[must_use]
-    pub fn albedo_xyz(&self, albedo: &dyn Spectrum) -> Xyz {
+    /// The colour of a reflectance under the illuminant, white `Y = 1`.
+    pub(crate) fn albedo_xyz(&self, albedo: &dyn Spectrum) -> Xyz {
         Xyz::from(integrate::xyz_of_product(&[self.illuminant, albedo])) / self.white_y
-    }
-
-    /// [`RgbSpace::albedo_xyz`] as linear RGB.
-    #[must_use]
-    pub fn rgb_of(&self, albedo: &dyn Spectrum) -> LinearSrgb {
-        self.rgb(self.albedo_xyz(albedo))
     }
 
     /// XYZ of the sigmoid polynomial `c` by the fit's nodes, and its
@@ -189,17 +193,33 @@ impl RgbSpace {
     /// The sigmoid polynomial of linear `rgb` (each component in [0, 1]):
     /// exact constants for black and white; otherwise the descent from the
     /// grey of the colour's luminance, and, where that stalls, along the
-    /// line from that grey in more and more steps.
+    /// line from that grey in more and more steps. A colour no reflectance
+    /// has (no step comes within the tolerance) gets the fit of the colour
+    /// on that line nearest it that one does ([`Fit::fit_reachable`]).
     pub(crate) fn fit(&self, rgb: [f64; 3]) -> SigmoidPolynomial {
         if rgb[0] == rgb[1] && rgb[1] == rgb[2] {
             return constant(rgb[0]);
         }
-        let target = self.xyz(LinearSrgb::from(rgb)).to_array();
+        match self.fit_with_error(rgb) {
+            (c, error) if error < TOLERANCE => SigmoidPolynomial::new(c),
+            _ => SigmoidPolynomial::new(self.fit_reachable(rgb)),
+        }
+    }
+
+    /// The grey of `rgb`'s luminance and `rgb`, as XYZ, and the constant
+    /// spectrum of that grey's coefficients.
+    fn grey_and_target(&self, rgb: [f64; 3]) -> ([f64; 3], [f64; 3], [f64; 3]) {
+        let target = self.xyz(LinearRgb::from(rgb)).to_array();
         // The flat spectrum of the colour's luminance has the white's colour
         // at that luminance: the path starts there, at constant Y.
         let y = target[1].clamp(1e-9, 1.0 - 1e-9);
-        let grey = (self.white * y).to_array();
-        let start = [0.0, 0.0, inverse_sigmoid(y)];
+        ((self.white * y).to_array(), target, [0.0, 0.0, inverse_sigmoid(y)])
+    }
+
+    /// [`Fit::fit`]'s best coefficients for a colour that is not a grey,
+    /// and the Lab error left.
+    fn fit_with_error(&self, rgb: [f64; 3]) -> ([f64; 3], f64) {
+        let (grey, target, start) = self.grey_and_target(rgb);
         let mut best = (start, f64::INFINITY);
         for legs in [1, 4, 16] {
             let mut fitted = (start, f64::INFINITY);
@@ -215,7 +235,38 @@ impl RgbSpace {
                 break;
             }
         }
-        SigmoidPolynomial::new(best.0)
+        best
+    }
+
+    /// For a colour no reflectance has, the fit of the last colour the line
+    /// from its grey (at its luminance) reaches within the tolerance:
+    /// [`LEGS`] steps along the line, each from the last one's
+    /// coefficients, then [`HALVINGS`] halvings of the step past the last
+    /// reached. A colour a reflectance has is reached at the end of the
+    /// line: its own fit. A continuous, bounded choice, so a table of such fits can be
+    /// interpolated.
+    fn fit_reachable(&self, rgb: [f64; 3]) -> [f64; 3] {
+        let (grey, target, mut c) = self.grey_and_target(rgb);
+        let point = |share: f64| [0, 1, 2].map(|i| grey[i] * (1.0 - share) + target[i] * share);
+        let mut reached = 0.0;
+        for leg in 1..=LEGS {
+            let share = f64::from(leg) / f64::from(LEGS);
+            match self.descend(point(share), c, PROBE_STEPS) {
+                (next, error) if error < TOLERANCE => (c, reached) = (next, share),
+                _ => break,
+            }
+        }
+        let mut step = 1.0 / f64::from(LEGS);
+        for _ in 0..HALVINGS {
+            step *= 0.5;
+            if reached + step <= 1.0
+                && let (next, error) = self.descend(point(reached + step), c, PROBE_STEPS)
+                && error < TOLERANCE
+            {
+                (c, reached) = (next, reached + step);
+            }
+        }
+        c
     }
 
     /// [`RgbSpace::fit`], starting from `start` if given (a neighbour's
@@ -225,37 +276,40 @@ impl RgbSpace {
             // Finite, for interpolating tables: 2.5e-9 everywhere.
             return SigmoidPolynomial::new([0.0, 0.0, -1e4]);
         }
-        if let Some(start) = start.filter(|s| s.iter().all(|v| v.is_finite())) {
-            let target = self.xyz(LinearSrgb::from(rgb)).to_array();
-            let (c, error) = self.descend(target, start, 40);
-            if error < TOLERANCE {
-                return SigmoidPolynomial::new(c);
-            }
+        let target = self.xyz(LinearRgb::from(rgb)).to_array();
+        let continued =
+            start.filter(|s| s.iter().all(|v| v.is_finite())).map(|start| self.descend(target, start, 40));
+        if let Some((c, error)) = continued
+            && error < TOLERANCE
+        {
+            return SigmoidPolynomial::new(c);
         }
-        let fitted = self.fit(rgb);
-        let c = fitted.coefficients();
+        if rgb[0] == rgb[1] && rgb[1] == rgb[2] {
+            return constant(rgb[0]);
+        }
+        // A colour the neighbour's path does not reach: the walk from its
+        // grey, which reaches it if a reflectance has it, and otherwise stops
+        // at the last colour one has.
+        let c = self.fit_reachable(rgb);
         if c.iter().all(|v| v.is_finite()) {
-            fitted
+            SigmoidPolynomial::new(c)
         } else {
             SigmoidPolynomial::new([0.0, 0.0, c[2].clamp(-1e4, 1e4)])
         }
-    }
-
-    /// `rgb` (negatives and NaN as 0) as `(scale, albedo)`: twice its largest
-    /// component and the sigmoid polynomial of the colour over that.
-    pub(crate) fn split(&self, rgb: LinearSrgb) -> (f64, SigmoidPolynomial) {
-        let rgb = rgb.map(|v| if v > 0.0 { v } else { 0.0 });
-        let largest = rgb.to_array().into_iter().fold(0.0, f64::max);
-        if !(largest > 0.0 && largest.is_finite()) {
-            return (0.0, SigmoidPolynomial::BLACK);
-        }
-        let scale = 2.0 * largest;
-        (scale, self.fit((rgb / scale).to_array()))
     }
 }
 
 /// The Lab error at which a fit stops: far below a just-noticeable difference.
 const TOLERANCE: f64 = 1e-7;
+
+/// The steps [`Fit::fit_reachable`] walks the line from grey in.
+const LEGS: u16 = 8;
+/// How many times it halves its step past the last colour reached (to
+/// 1/8 · 2⁻⁴ = 1/128 of the line).
+const HALVINGS: usize = 4;
+/// Gauss–Newton steps it gives a point: one past the last reachable never
+/// converges, and each try costs.
+const PROBE_STEPS: usize = 12;
 
 /// `a · b`.
 fn product(a: &Matrix, b: &Matrix) -> Matrix {

@@ -2,11 +2,25 @@
 //! (see [`super::triple`]). The conversion to linear sRGB,
 //! [`Xyz::to_linear_srgb`], lives with the colour space (`srgb.rs`).
 //!
+//! **Two conventions.** Every XYZ this crate computes is the assignment's:
+//! `∫ v(λ)·c̄(λ) dλ` over 380–730 nm, in the units of the spectrum `v`
+//! times nanometres, so a constant spectrum of 1 has `Y = ∫ȳ =`
+//! [`Y_BAR_INTEGRAL`] (106.8489): what Appendix 2 tabulates.
+//! [`Xyz::normalized`] gives a renderer's: divided by ∫ȳ, so that a
+//! constant 1 has `Y = 1`. pbrt-v4 divides by its `CIE_Y_integral`,
+//! 106.856895, the integral over 360–830 nm; Mitsuba 3 by 106.7502594;
+//! this crate's range is 380–730 nm throughout, so its ∫ȳ is over that.
+//!
 //! ```
-//! use speclab::Xyz;
+//! use speclab::{Xyz, spectrum::{Constant, observer::Y_BAR_INTEGRAL}, sampling::reference};
 //! let sum: Xyz = [Xyz::new(1.0, 2.0, 3.0), Xyz::from([0.5, 0.5, 0.5])].into_iter().sum();
 //! assert_eq!(sum / 2.0, Xyz::new(0.75, 1.25, 1.75));
+//! let one = reference::white(&Constant::new(1.0)); // the assignment's: Y = ∫ȳ
+//! assert!((one.y - Y_BAR_INTEGRAL).abs() < 1e-12 * one.y);
+//! assert!((one.normalized().y - 1.0).abs() < 1e-12); // a renderer's: Y = 1
 //! ```
+
+use crate::spectrum::observer::Y_BAR_INTEGRAL;
 
 use crate::color::triple::triple_arithmetic;
 
@@ -30,6 +44,15 @@ impl Xyz {
     #[must_use]
     pub const fn new(x: f64, y: f64, z: f64) -> Self {
         Xyz { x, y, z }
+    }
+
+    /// A renderer's convention: this XYZ (the assignment's, spectrum·nm)
+    /// divided by ∫ȳ over 380–730 nm ([`Y_BAR_INTEGRAL`]), so that a
+    /// constant spectrum of 1 has `Y = 1` (see the module overview).
+    #[inline]
+    #[must_use]
+    pub fn normalized(self) -> Xyz {
+        self * (1.0 / Y_BAR_INTEGRAL)
     }
 }
 

@@ -1,5 +1,6 @@
 //! A wavelength pdf that follows a light: `p(λ) ∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)` over
-//! 380–730 nm, tabulated exactly.
+//! 380–730 nm (or `∝ S(λ)` alone, without the observer), tabulated
+//! exactly.
 //!
 //! Between consecutive breaks of the light and of the matching functions
 //! every factor is one polynomial (a clamped segment contributes its bound),
@@ -62,9 +63,10 @@ pub(crate) struct PiecewisePdf {
 }
 
 impl PiecewisePdf {
-    /// The density ∝ `light·Σ alpha꜀·c̄꜀`, or `None` if it integrates to
-    /// zero (or to something not finite) over 380–730 nm.
-    pub(crate) fn new(light: &dyn Spectrum, alpha: [f64; 3]) -> Option<Self> {
+    /// The density ∝ `light·Σ alpha꜀·c̄꜀` (∝ `light` alone for `None`), or
+    /// `None` if it integrates to zero (or to something not finite) over
+    /// 380–730 nm.
+    pub(crate) fn new(light: &dyn Spectrum, alpha: Option<[f64; 3]>) -> Option<Self> {
         let cmf = observer::views();
         let (a, b) = (LAMBDA_MIN, LAMBDA_MAX);
         let pieces = light.pieces();
@@ -85,10 +87,13 @@ impl PiecewisePdf {
                     Some(v) => piece_poly(v, w[0], w[1]),
                     None => spectrum_piece(light, w[0], w[1], degree),
                 };
-                let c = (0..3).fold([0.0; 4], |acc, i| {
-                    let p = piece_poly(&cmf[i], w[0], w[1]);
-                    std::array::from_fn(|j| acc[j] + alpha[i] * p[j])
-                });
+                let c = match alpha {
+                    Some(alpha) => (0..3).fold([0.0; 4], |acc, i| {
+                        let p = piece_poly(&cmf[i], w[0], w[1]);
+                        std::array::from_fn(|j| acc[j] + alpha[i] * p[j])
+                    }),
+                    None => [1.0, 0.0, 0.0, 0.0],
+                };
                 product(l, c)
             })
             .collect();

@@ -235,7 +235,28 @@ impl LightPdf {
     /// [`Error::NoMass`] if that has no mass over 380–730 nm.
     pub fn weighted(spectrum: &impl Spectrum, alpha: [f64; 3]) -> Result<Self, Error> {
         let alpha = alpha.map(|a| if a.is_finite() && a > 0.0 { a } else { 0.0 });
-        PiecewisePdf::new(spectrum, alpha).map(|table| LightPdf { table }).ok_or(Error::NoMass)
+        PiecewisePdf::new(spectrum, Some(alpha)).map(|table| LightPdf { table }).ok_or(Error::NoMass)
+    }
+
+    /// `p ∝ S(λ)` over 380–730 nm: a density proportional to a spectrum
+    /// alone, without the observer (Mitsuba 3's `sample_spectrum` and
+    /// `pdf_spectrum`): for an emitter's own spectrum, or any weight a
+    /// renderer wants its wavelengths to follow. Exact where `S` is
+    /// piecewise polynomial; [`BinnedPdf`](super::binned::BinnedPdf) of it
+    /// samples without a search. An [`Error::NoMass`] if `S` has no mass
+    /// over 380–730 nm (negative values count as none).
+    ///
+    /// ```
+    /// use speclab::data::lights;
+    /// use speclab::sampling::pdf::{LightPdf, WavelengthPdf};
+    /// let f11 = LightPdf::spectrum(&lights::F11)?;
+    /// let ratio = f11.pdf(545.0) / f11.pdf(500.0);
+    /// assert!((ratio - lights::F11.eval(545.0) / lights::F11.eval(500.0)).abs() < 1e-9 * ratio);
+    /// assert!(LightPdf::spectrum(&speclab::spectrum::Constant::new(0.0)).is_err());
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    pub fn spectrum(spectrum: &impl Spectrum) -> Result<Self, Error> {
+        PiecewisePdf::new(spectrum, None).map(|table| LightPdf { table }).ok_or(Error::NoMass)
     }
 }
 

@@ -88,7 +88,9 @@ impl<const K: usize, T: Float> SampledWavelengths<K, T> {
 
     /// The XYZ of a spectrum with values `v` at these wavelengths:
     /// `Σⱼ w꜀ⱼ·vⱼ`, summed in `T`, returned in `f64` (a pixel's sum of
-    /// many estimates is then exact to `f64`).
+    /// many estimates is then exact to `f64`). The assignment's convention,
+    /// spectrum·nm; [`Xyz::normalized`] gives a renderer's (a constant 1
+    /// has `Y = 1`).
     #[inline(always)]
     #[must_use]
     pub fn to_xyz(&self, v: SampledSpectrum<K, T>) -> Xyz {

@@ -21,6 +21,7 @@ use std::borrow::Cow;
 
 use crate::error::Error;
 use crate::spectrum::interface::{Pieces, Spectrum};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// The same value at every wavelength.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -57,15 +58,22 @@ impl Spectrum for Constant {
     fn pieces(&self) -> Option<Pieces<'_>> {
         Some(Pieces { breaks: Cow::Borrowed(&[]), degree: 0 })
     }
+
+    /// Exact: the value.
+    fn max_value(&self) -> f64 {
+        self.value
+    }
 }
 
 /// A blackbody's spectral radiance by Planck's law, at a temperature in
-/// kelvin, normalised so that its peak (at Wien's `λ = b/T`) is 1, as
-/// pbrt-v4's `BlackbodySpectrum`. Zero at wavelengths that are not positive.
+/// kelvin: normalised so that its peak (at Wien's `λ = b/T`) is 1, as
+/// pbrt-v4's `BlackbodySpectrum` ([`Blackbody::new`]), or in absolute units,
+/// W·sr⁻¹·m⁻²·nm⁻¹ ([`Blackbody::absolute`], [`planck`]). Zero at
+/// wavelengths that are not positive.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Blackbody {
     kelvin: f64,
-    /// `1 / B(λ_peak, T)`.
+    /// `1 / B(λ_peak, T)`, or 1e-9 (per m → per nm) in absolute units.
     normalization: f64,
 }
 
@@ -78,8 +86,22 @@ const BOLTZMANN: f64 = 1.380_649e-23;
 /// Wien's displacement constant, m·K (CODATA 2018).
 const WIEN: f64 = 2.897_771_955e-3;
 
-/// Planck's law: spectral radiance at `lambda` nm and `kelvin`, W/(sr·m³).
-fn planck(lambda: f64, kelvin: f64) -> f64 {
+/// Planck's law: a blackbody's spectral radiance at `lambda` nm and
+/// `kelvin`, in W·sr⁻¹·m⁻²·nm⁻¹ (CODATA 2018's exact h, c and k); 0 at
+/// wavelengths that are not positive.
+///
+/// ```
+/// // At 6000 K and 600 nm: 2.867639e13 W·sr⁻¹·m⁻³, 2.867639e4 per nm.
+/// let b = speclab::spectrum::planck(600.0, 6000.0);
+/// assert!((b - 2.867639e4).abs() < 1e-6 * b);
+/// ```
+#[must_use]
+pub fn planck(lambda: f64, kelvin: f64) -> f64 {
+    planck_per_m(lambda, kelvin) * 1e-9
+}
+
+/// Planck's law per metre of wavelength, W·sr⁻¹·m⁻³.
+fn planck_per_m(lambda: f64, kelvin: f64) -> f64 {
     if lambda <= 0.0 {
         return 0.0;
     }
@@ -89,14 +111,27 @@ fn planck(lambda: f64, kelvin: f64) -> f64 {
 }
 
 impl Blackbody {
-    /// The blackbody at `kelvin`; an error unless it is finite and
-    /// positive.
+    /// The blackbody at `kelvin`, normalised to a peak of 1; an error
+    /// unless the temperature is finite and positive.
     pub fn new(kelvin: f64) -> Result<Self, Error> {
-        let normalization = 1.0 / planck(WIEN / kelvin * 1e9, kelvin);
+        let normalization = 1.0 / planck_per_m(WIEN / kelvin * 1e9, kelvin);
         if !(kelvin.is_finite() && kelvin > 0.0 && normalization.is_finite() && normalization > 0.0) {
             return Err(Error::Temperature { kelvin });
         }
         Ok(Blackbody { kelvin, normalization })
+    }
+
+    /// The blackbody at `kelvin` in absolute units: its spectral radiance,
+    /// W·sr⁻¹·m⁻²·nm⁻¹ ([`planck`]); an error unless the temperature is
+    /// finite and positive.
+    pub fn absolute(kelvin: f64) -> Result<Self, Error> {
+        Self::new(kelvin).map(|b| Blackbody { normalization: 1e-9, ..b })
+    }
+
+    /// The wavelength of its peak, nm (Wien's law, `b/T`).
+    #[must_use]
+    pub fn peak(&self) -> f64 {
+        WIEN / self.kelvin * 1e9
     }
 
     /// The temperature, K.
@@ -109,7 +144,13 @@ impl Blackbody {
 impl Spectrum for Blackbody {
     #[inline]
     fn eval(&self, lambda: f64) -> f64 {
-        planck(lambda, self.kelvin) * self.normalization
+        planck_per_m(lambda, self.kelvin) * self.normalization
+    }
+
+    /// Exact: Planck's law rises to its peak and falls after, so over
+    /// 380–730 nm it is largest at the peak or the end nearest it.
+    fn max_value(&self) -> f64 {
+        self.eval(self.peak().clamp(LAMBDA_MIN, LAMBDA_MAX))
     }
 }
 
@@ -135,7 +176,7 @@ mod tests {
     /// the same to 4 digits); the peak is where Wien puts it.
     #[test]
     fn planck_and_its_peak() {
-        let b = planck(500.0, 5000.0);
+        let b = planck_per_m(500.0, 5000.0);
         assert!((b / 1.2107e13 - 1.0).abs() < 1e-3, "{b:e}");
         let sun = Blackbody::new(5000.0).unwrap();
         let peak = WIEN / 5000.0 * 1e9;

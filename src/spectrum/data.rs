@@ -64,11 +64,38 @@ pub mod lights {
     use crate::error::Error;
     use crate::spectrum::{Role, TabulatedSpectrum};
 
-    /// The light named `name` (any case): a built-in one ([`NAMES`]), or
-    /// `D` and a temperature in kelvin for CIE daylight ([`daylight`]),
-    /// e.g. `D5000`. An [`Error::UnknownName`] names the nearest names.
+    /// pbrt-v4's names for the CIE illuminants it ships, each with the
+    /// built-in light it names: what a scene ported from pbrt-v4 types.
+    /// (`D65`, `A` and `F11` are the assignment's tables, which Appendix 2
+    /// uses; pbrt-v4's `stdillum-D65` and `stdillum-A` are the CIE's,
+    /// `CIE-D65` and `CIE-A` here.)
+    pub const ALIASES: [(&str, &str); 15] = [
+        ("stdillum-A", "CIE-A"),
+        ("stdillum-D50", "D50"),
+        ("stdillum-D65", "CIE-D65"),
+        ("stdillum-F1", "F1"),
+        ("stdillum-F2", "F2"),
+        ("stdillum-F3", "F3"),
+        ("stdillum-F4", "F4"),
+        ("stdillum-F5", "F5"),
+        ("stdillum-F6", "F6"),
+        ("stdillum-F7", "F7"),
+        ("stdillum-F8", "F8"),
+        ("stdillum-F9", "F9"),
+        ("stdillum-F10", "F10"),
+        ("stdillum-F11", "F11"),
+        ("stdillum-F12", "F12"),
+    ];
+
+    /// The light named `name` (any case): a built-in one ([`NAMES`]; `A`,
+    /// `D65` and `F11` are the assignment's tables, `CIE-A` and `CIE-D65`
+    /// the CIE's), pbrt-v4's name for one ([`ALIASES`], e.g.
+    /// `stdillum-D65`), or `D` and a temperature in kelvin for CIE
+    /// daylight ([`daylight`]), e.g. `D5000`. An [`Error::UnknownName`]
+    /// names the nearest names.
     pub fn named(name: &str) -> Result<std::borrow::Cow<'static, TabulatedSpectrum>, Error> {
-        if let Some(light) = super::find(&ALL, name) {
+        let alias = ALIASES.iter().find(|(a, _)| a.eq_ignore_ascii_case(name)).map_or(name, |&(_, n)| n);
+        if let Some(light) = super::find(&ALL, alias) {
             return Ok(std::borrow::Cow::Borrowed(light));
         }
         let kelvin = name.strip_prefix(['D', 'd']).and_then(|t| t.parse::<f64>().ok());

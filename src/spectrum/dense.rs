@@ -120,6 +120,12 @@ impl Spectrum for DenseSpectrum {
         DenseSpectrum::sample(self, at)
     }
 
+    /// Exact: the largest of its 351 values (it is a step function over
+    /// 380–730 nm).
+    fn max_value(&self) -> f64 {
+        self.values::<f64>().iter().copied().fold(f64::NEG_INFINITY, f64::max)
+    }
+
     /// Steps: constant between half nanometres (and zero outside
     /// 380–730 nm).
     fn pieces(&self) -> Option<Pieces<'_>> {

@@ -171,6 +171,18 @@ pub trait Spectrum {
     fn running_integral(&self, _lambda: f64) -> Option<f64> {
         None
     }
+
+    /// The largest value the spectrum takes between 380 and 730 nm (the
+    /// range every sampler draws from), or a bound above it, as pbrt-v4's
+    /// `MaxValue`, for sampling and clamping: exact for tables (the
+    /// interpolant's maximum, not only the samples'), dense tables,
+    /// constants, blackbodies and sigmoid polynomials; a bound for
+    /// mixtures, products, RGB illuminants and metals (each kind's
+    /// documentation says which). By default `+∞`: a spectrum that says
+    /// nothing of itself (a closure) is bounded by nothing.
+    fn max_value(&self) -> f64 {
+        f64::INFINITY
+    }
 }
 
 /// A reference or a box to a spectrum is the spectrum.
@@ -197,6 +209,9 @@ macro_rules! forward_spectrum {
             }
             fn running_integral(&self, lambda: f64) -> Option<f64> {
                 (**self).running_integral(lambda)
+            }
+            fn max_value(&self) -> f64 {
+                (**self).max_value()
             }
         }
     )*};

@@ -68,4 +68,9 @@ impl Spectrum for Mixture<'_> {
         breaks.dedup();
         Some(Pieces { breaks: Cow::Owned(breaks), degree })
     }
+
+    /// A bound: `Σ wᵢ·max Sᵢ` (the terms' maxima need not coincide).
+    fn max_value(&self) -> f64 {
+        self.terms.iter().map(|(w, s)| if *w > 0.0 { w * s.max_value() } else { 0.0 }).sum()
+    }
 }

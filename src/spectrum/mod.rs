@@ -10,8 +10,9 @@
 //! - [`DenseSpectrum`]: any spectrum at every whole nanometre, in `f32` or
 //!   `f64`, one load per wavelength (the fast path); [`DenseObserver`],
 //!   the observer so.
-//! - [`Constant`], [`Blackbody`], [`FnSpectrum`] (a closure), [`Mixture`]
-//!   (a weighted sum: a scene's lights).
+//! - [`Constant`], [`Blackbody`] (peak 1, or absolute: [`planck`]),
+//!   [`FnSpectrum`] (a closure), [`Mixture`] (a weighted sum: a scene's
+//!   lights), [`Scaled`] (`light * 4.0`).
 //! - [`SigmoidPolynomial`]: the function behind the spectra of RGB
 //!   colours (`color::RgbAlbedo` and its siblings, one floor up).
 //! - [`SampledSpectrum`]: a spectrum's values at K wavelengths (any
@@ -54,6 +55,7 @@ pub(crate) mod pointwise;
 mod product;
 pub(crate) mod quadrature;
 mod sampled;
+pub(crate) mod scaled;
 mod sigmoid;
 mod tabulated;
 pub(crate) mod weights;
@@ -62,7 +64,7 @@ pub(crate) use speclab_tables::interp;
 pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
 pub use speclab_tables::validate;
 
-pub use analytic::{Blackbody, Constant, FnSpectrum};
+pub use analytic::{Blackbody, Constant, FnSpectrum, planck};
 pub use dense::{DenseObserver, DenseSpectrum};
 pub use float::Float;
 pub use interface::{Pieces, Samples, Spectrum};
@@ -71,6 +73,7 @@ pub use observer::{Cie1931, Observer};
 pub use optics::{Cauchy, Conductor, NormalReflectance, Sellmeier};
 pub use product::Product;
 pub use sampled::{SampledSpectrum, Wavelengths};
+pub use scaled::Scaled;
 pub use sigmoid::{SigmoidPolynomial, sigmoid};
 #[doc(hidden)]
 pub use tabulated::Tables;

@@ -107,6 +107,11 @@ impl Spectrum for NormalReflectance<'_> {
     fn pieces(&self) -> Option<Pieces<'_>> {
         None
     }
+
+    /// A bound: 1 (no reflectance exceeds it).
+    fn max_value(&self) -> f64 {
+        1.0
+    }
 }
 
 /// A dielectric's refractive index by Sellmeier's formula,
@@ -156,6 +161,14 @@ impl Spectrum for Sellmeier {
         let n2 = 1.0 + (0..3).map(|i| self.b[i] * l2 / (l2 - self.c[i])).sum::<f64>();
         if n2 > 0.0 { n2.sqrt() } else { f64::NAN }
     }
+
+    /// Exact when every Bᵢ ≥ 0: each term `Bᵢλ²/(λ² − Cᵢ)` then falls as λ
+    /// grows (on either side of its resonance, none of which lies in
+    /// 380–730 nm), so n is largest at 380 nm. `+∞` (no bound known)
+    /// otherwise.
+    fn max_value(&self) -> f64 {
+        if self.b.iter().all(|&b| b >= 0.0) { self.eval(LAMBDA_MIN) } else { f64::INFINITY }
+    }
 }
 
 /// A dielectric's refractive index by Cauchy's formula,
@@ -191,6 +204,18 @@ impl Spectrum for Cauchy {
     /// A polynomial in 1/λ², not in λ: quadrature.
     fn pieces(&self) -> Option<Pieces<'_>> {
         None
+    }
+
+    /// Exact: n is a quadratic in u = 1/λ² over u's interval, largest at an
+    /// end or at its vertex.
+    fn max_value(&self) -> f64 {
+        let u = |lambda: f64| 1.0 / (lambda * 1e-3).powi(2);
+        let (lo, hi) = (u(LAMBDA_MAX), u(LAMBDA_MIN));
+        let n = |u: f64| self.a + self.b * u + self.c * u * u;
+        let vertex = -self.b / (2.0 * self.c);
+        let inside = self.c < 0.0 && (lo..=hi).contains(&vertex);
+        let ends = n(lo).max(n(hi));
+        if inside { ends.max(n(vertex)) } else { ends }
     }
 }
 

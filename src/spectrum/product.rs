@@ -94,4 +94,12 @@ impl Spectrum for Product<'_> {
         breaks.dedup();
         Some(Pieces { breaks: Cow::Owned(breaks), degree })
     }
+
+    /// A bound: `Π max Sᵢ` when every factor is non-negative (bounded
+    /// below by 0, as lights and reflectances are: a maximum of 0 or
+    /// more); `+∞` if a factor's maximum is negative or unknown.
+    fn max_value(&self) -> f64 {
+        let maxima = self.factors.iter().map(|s| s.max_value());
+        maxima.fold(1.0, |product, m| if m >= 0.0 { product * m } else { f64::INFINITY })
+    }
 }

@@ -61,6 +61,21 @@ impl SigmoidPolynomial {
         sigmoid(self.c[2] + t * (self.c[1] + t * self.c[0]))
     }
 
+    /// Exact: the largest value over 380–730 nm. The sigmoid rises with its
+    /// argument, a quadratic in t ∈ [0, 1], largest at an end or at its
+    /// vertex.
+    #[must_use]
+    pub fn max_value(&self) -> f64 {
+        let [c0, c1, c2] = self.c;
+        if self.is_constant() {
+            return sigmoid(c2);
+        }
+        let x = |t: f64| c2 + t * (c1 + t * c0);
+        let vertex = -c1 / (2.0 * c0);
+        let ends = x(0.0).max(x(1.0));
+        sigmoid(if c0 < 0.0 && (0.0..=1.0).contains(&vertex) { ends.max(x(vertex)) } else { ends })
+    }
+
     /// True if the polynomial is a constant (`c₀ = c₁ = 0`).
     fn is_constant(&self) -> bool {
         self.c[0] == 0.0 && self.c[1] == 0.0

@@ -34,6 +34,7 @@ use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{self, Interpolation, Role};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// Precomputed tables of a spectrum, as `speclab_tables::Codegen` writes them for
 /// static data: samples, the coefficients `[c0, c1, c2, c3]` of each
@@ -391,6 +392,26 @@ impl Spectrum for TabulatedSpectrum {
     /// table.
     fn running_integral(&self, lambda: f64) -> Option<f64> {
         Some(self.cumulative(lambda))
+    }
+
+    /// Exact: the largest value of the clamped interpolant over 380–730 nm
+    /// (each segment's polynomial at the ends of its part of the range and
+    /// where its derivative vanishes), and 0 if the table does not cover
+    /// the whole range.
+    fn max_value(&self) -> f64 {
+        let (lo, hi) = (self.ends[0].max(LAMBDA_MIN), self.ends[1].min(LAMBDA_MAX));
+        let outside =
+            if self.ends[0] > LAMBDA_MIN || self.ends[1] < LAMBDA_MAX { 0.0 } else { f64::NEG_INFINITY };
+        let mut best = outside;
+        for (k, c) in self.coeffs.iter().enumerate() {
+            let (a, b) = (self.lambda[k].max(lo), self.lambda[k + 1].min(hi));
+            if a > b {
+                continue;
+            }
+            let (a, b) = (a - self.lambda[k], b - self.lambda[k]);
+            best = best.max(interp::segment_max(*c, a, b));
+        }
+        best.clamp(self.bounds[0], self.bounds[1])
     }
 }
 

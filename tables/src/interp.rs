@@ -178,6 +178,33 @@ pub const fn segment_value(c: Coeffs, t: f64) -> f64 {
     c[0] + t * (c[1] + t * (c[2] + t * c[3]))
 }
 
+/// The largest value of the polynomial `c` (in `t`) over `[a, b]`: at an
+/// end, or where its derivative `c₁ + 2c₂t + 3c₃t²` vanishes inside.
+#[must_use]
+pub fn segment_max(c: Coeffs, a: f64, b: f64) -> f64 {
+    let mut best = segment_value(c, a).max(segment_value(c, b));
+    let [_, c1, c2, c3] = c;
+    let (qa, qb, qc) = (3.0 * c3, 2.0 * c2, c1);
+    let mut at = |t: f64| {
+        if t > a && t < b {
+            best = best.max(segment_value(c, t));
+        }
+    };
+    if qa == 0.0 {
+        if qb != 0.0 {
+            at(-qc / qb);
+        }
+    } else {
+        let disc = qb * qb - 4.0 * qa * qc;
+        if disc >= 0.0 {
+            let root = disc.sqrt();
+            at((-qb - root) / (2.0 * qa));
+            at((-qb + root) / (2.0 * qa));
+        }
+    }
+    best
+}
+
 /// `x` limited to `[lo, hi]`; NaN stays NaN.
 #[inline]
 pub const fn clamp(x: f64, bounds: [f64; 2]) -> f64 {

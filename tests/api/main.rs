@@ -5,6 +5,7 @@
 
 mod alloc;
 mod build_data;
+mod carry;
 mod fuzz_body;
 mod fuzz_regressions;
 mod input_errors;

@@ -7,6 +7,7 @@ mod dense;
 mod energy;
 mod finite;
 mod fitted;
+mod max_value;
 mod no_panic;
 mod pdfs;
 mod prepared;

@@ -17,8 +17,32 @@ fn pdfs() -> Vec<(String, Box<dyn WavelengthPdf>)> {
         let l = light.spectrum();
         out.push((format!("light {light:?}"), Box::new(LightPdf::light(l).expect("bright"))));
         out.push((format!("balanced {light:?}"), Box::new(LightPdf::balanced(l).expect("bright"))));
+        out.push((format!("spectrum {light:?}"), Box::new(LightPdf::spectrum(l).expect("bright"))));
     }
+    let g4 = speclab::data::patches::G4.clone();
+    out.push(("spectrum G4".into(), Box::new(LightPdf::spectrum(&g4).expect("a reflectance"))));
     out
+}
+
+/// A spectrum's own pdf is proportional to it: `pdf(λ)/S(λ)` is one
+/// constant over the range (for a table, a patch and a blackbody, which is
+/// tabulated through its values at the ends of each piece of at most 5 nm:
+/// there the ratio holds at those ends).
+#[test]
+fn a_spectrums_pdf_is_proportional_to_it() {
+    let sun = speclab::spectrum::Blackbody::new(5778.0).expect("a temperature");
+    let spectra: [(&dyn speclab::Spectrum, &[f64]); 3] = [
+        (&speclab::data::lights::F11, &[400.0, 545.0, 611.0, 707.5]),
+        (&speclab::data::patches::J4, &[380.0, 455.0, 600.0, 730.0]),
+        (&sun, &[380.0, 450.0, 600.0, 730.0]),
+    ];
+    for (s, at) in spectra {
+        let p = LightPdf::spectrum(&s).expect("bright");
+        let ratio = p.pdf(at[0]) / s.eval(at[0]);
+        for &l in at {
+            assert!((p.pdf(l) / s.eval(l) - ratio).abs() < 1e-9 * ratio, "{l} nm");
+        }
+    }
 }
 
 /// `∫ pdf` over 380–730 nm by 16-point Gauss–Legendre on 0.25 nm pieces

@@ -5,17 +5,17 @@
 
 use proptest::prelude::*;
 use speclab::color::rgb_table::RgbTable;
-use speclab::color::upsample::RgbSpace;
-use speclab::color::{RgbAlbedo, RgbIlluminant, RgbUnbounded};
+use speclab::color::space::RgbSpace;
+use speclab::color::{LinearRgb, RgbAlbedo, RgbIlluminant, RgbUnbounded};
 use speclab::spectrum::SigmoidPolynomial;
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
 use speclab::{Error, LinearSrgb, Spectrum};
 
-/// ΔE00 of the round trip of `rgb` through `albedo`, in CIELAB relative to
-/// the colour space's white.
+/// ΔE00 of the round trip of `rgb` through `albedo` (its colour under the
+/// space's illuminant, `rgb_of`), in CIELAB relative to the space's white.
 fn round_trip(rgb: LinearSrgb, albedo: &RgbAlbedo) -> f64 {
     let space = RgbSpace::srgb();
-    speclab::color::difference::delta_e00(space.albedo_xyz(albedo), space.xyz(rgb), space.white())
+    speclab::color::difference::delta_e00(space.xyz(space.rgb_of(albedo)), space.xyz(rgb), space.white())
 }
 
 /// Published requirement: ΔE00 ≤ 0.01 for every albedo of a 17³ grid in
@@ -51,9 +51,9 @@ fn black_white_and_greys_are_constants() {
         assert!(grey.pieces().is_some(), "a constant integrates exactly");
     }
     // (1, 1, 1) is the space's white: the perfect reflector.
-    assert!(space.rgb(space.white()).distance(LinearSrgb::splat(1.0)) < 1e-12);
+    assert!(space.rgb(space.white()).distance(LinearRgb::splat(1.0)) < 1e-12);
     assert!(
-        space.rgb_of(&RgbAlbedo::new(LinearSrgb::splat(1.0)).unwrap()).distance(LinearSrgb::splat(1.0))
+        space.rgb_of(&RgbAlbedo::new(LinearSrgb::splat(1.0)).unwrap()).distance(LinearRgb::splat(1.0))
             < 1e-12
     );
 }
@@ -68,26 +68,38 @@ fn colours_outside_the_albedo_cube_are_errors() {
     }
 }
 
-/// An unbounded colour is twice its largest component times an albedo;
-/// an illuminant is that times D65, with (1, 1, 1) as bright as a constant
-/// spectrum of 1.
+/// An unbounded colour is twice its largest component times an albedo
+/// from the space's table; an illuminant is that times the space's
+/// illuminant, with (1, 1, 1) as bright as a constant spectrum of 1. Their
+/// colours come back within the table's accuracy (ΔE00 ≤ 0.05, as
+/// `table_round_trip_on_a_grid`), measured as the albedo of the colour over
+/// its scale. Both build sRGB's full table on first use.
 #[test]
 fn unbounded_colours_and_illuminants() {
     let space = RgbSpace::srgb();
-    let rgb = LinearSrgb::new(2.0, 0.5, 0.1);
-    let unbounded = RgbUnbounded::new(rgb);
-    assert_eq!(unbounded.scale(), 4.0);
-    assert!(space.rgb_of(&unbounded).distance(rgb) < 1e-4, "{:?}", space.rgb_of(&unbounded));
+    let de = |a: LinearRgb, b: LinearRgb, scale: f64| {
+        speclab::color::difference::delta_e00(space.xyz(a / scale), space.xyz(b / scale), space.white())
+    };
+    let rgb = LinearRgb::new(2.0, 0.5, 0.1);
+    let unbounded = RgbUnbounded::new(rgb.into());
+    assert_eq!((unbounded, unbounded.scale()), (space.unbounded(rgb), 4.0));
+    assert!(de(space.rgb_of(&unbounded), rgb, 4.0) < 0.05, "{:?}", space.rgb_of(&unbounded));
     let clamped = RgbUnbounded::new(LinearSrgb::new(-1.0, f64::NAN, 0.5));
-    assert!(space.rgb_of(&clamped).distance(LinearSrgb::new(0.0, 0.0, 0.5)) < 1e-4);
+    assert!(de(space.rgb_of(&clamped), LinearRgb::new(0.0, 0.0, 0.5), 1.0) < 0.05);
     assert_eq!(RgbUnbounded::new(LinearSrgb::splat(0.0)).eval(500.0), 0.0);
     let white = RgbIlluminant::new(LinearSrgb::splat(1.0));
     let y = speclab::sampling::reference::white(&white).y;
     assert!((y - Y_BAR_INTEGRAL).abs() < 1e-9 * y, "{y} vs {Y_BAR_INTEGRAL}");
-    // An illuminant's colour is its rgb, up to its scale.
-    let light = RgbIlluminant::new(LinearSrgb::new(1.0, 0.6, 0.2));
+    assert!(std::ptr::eq(white.illuminant(), space.illuminant()));
+    // An illuminant's colour is twice its largest component times its
+    // albedo's under the illuminant (exactly), and that is its rgb.
+    let rgb = LinearRgb::new(1.0, 0.6, 0.2);
+    let light = RgbIlluminant::new(rgb.into());
     let emitted = speclab::sampling::reference::white(&light) / Y_BAR_INTEGRAL;
-    assert!(space.rgb(emitted).distance(LinearSrgb::new(1.0, 0.6, 0.2)) < 1e-4, "{:?}", space.rgb(emitted));
+    let albedo = RgbAlbedo::from_polynomial(light.polynomial());
+    let expected = space.albedo_xyz(&albedo) * 2.0;
+    assert!((emitted - expected).to_array().iter().all(|d| d.abs() < 1e-12), "{emitted:?}");
+    assert!(de(space.rgb_of(&albedo) * 2.0, rgb, 2.0) < 0.05);
 }
 
 /// `3t² − 2t³`, the table's spacing of its largest component (twice).
@@ -109,7 +121,7 @@ fn table_lookups_at_nodes_are_fits() {
         rgb[case] = z;
         rgb[(case + 1) % 3] = f64::from(i) / 7.0 * z;
         rgb[(case + 2) % 3] = f64::from(j) / 7.0 * z;
-        let rgb = LinearSrgb::from(rgb);
+        let rgb = LinearRgb::from(rgb);
         let looked_up = space.rgb_of(&table.albedo(rgb).unwrap());
         assert!(looked_up.distance(rgb) < 1e-6, "{rgb:?}: {looked_up:?}");
     }
@@ -119,7 +131,7 @@ fn table_lookups_at_nodes_are_fits() {
 /// [0, 1]³ (a golden-ratio sequence): mean ΔE00 below 0.02, the 95th
 /// percentile below 0.05, the worst below 0.35 (measured: 0.013, 0.033,
 /// 0.315). Building the table takes seconds in release: CI runs this there
-/// (`cargo test --release --test upsample -- --ignored`).
+/// (`cargo test --release --test properties upsample -- --ignored`).
 #[test]
 #[ignore = "builds the full table; CI runs it in release"]
 fn table_accuracy_between_nodes() {
@@ -178,5 +190,70 @@ proptest! {
             let v = albedo.eval(l);
             prop_assert!((0.0..=1.0).contains(&v), "{} at {}", v, l);
         }
+    }
+}
+
+/// Every built-in space's table on a 9³ grid of albedos: the round trip
+/// (look up, then the albedo's colour under the space's illuminant) against
+/// the colour asked for, wherever a reflectance of that colour exists (a
+/// fit for that colour alone comes back within ΔE00 0.01), and, where none
+/// does, against the fit's own error (both give the reflectance of the last
+/// colour reached on the line from the colour's grey).
+///
+/// The target, ΔE00 0.05, holds for sRGB and Display P3 (measured: 0.037
+/// and 0.042; P3's gap where no reflectance exists 0.11). It is **missed**
+/// for Rec.2020 (0.33), ACEScg (0.73) and ACES2065-1 (0.36): their
+/// saturated colours lie at or past the object colours' limit, where a
+/// sigmoid polynomial's fit is a step of unbounded steepness and
+/// interpolating coefficients between steps with different edges blurs
+/// them. For those three the bounds below are the measured figures with a
+/// tenth more: a regression guard, not the target.
+#[test]
+#[ignore = "builds five full tables; CI runs it in release"]
+fn every_spaces_table_round_trips_on_a_grid() {
+    let mut results = Vec::new();
+    for space in RgbSpace::all() {
+        let start = std::time::Instant::now();
+        let table = space.table();
+        let built = start.elapsed().as_secs_f64();
+        let de = |rgb: LinearRgb, albedo: &RgbAlbedo| {
+            speclab::color::difference::delta_e00(
+                space.xyz(space.rgb_of(albedo)),
+                space.xyz(rgb),
+                space.white(),
+            )
+        };
+        let (mut worst, mut unreachable, mut worst_gap) = ((0.0f64, LinearRgb::default()), 0, 0.0f64);
+        for i in 0..729 {
+            let rgb =
+                LinearRgb::new(f64::from(i / 81) / 8.0, f64::from(i / 9 % 9) / 8.0, f64::from(i % 9) / 8.0);
+            let (looked_up, fitted) =
+                (de(rgb, &table.albedo(rgb).unwrap()), de(rgb, &space.fit_albedo(rgb).unwrap()));
+            if fitted > 0.01 {
+                unreachable += 1;
+                worst_gap = worst_gap.max(looked_up - fitted);
+            } else if looked_up > worst.0 {
+                worst = (looked_up, rgb);
+            }
+        }
+        eprintln!(
+            "{}: table built in {built:.1} s; round trip worst ΔE00 {:.4} at {:?}; {unreachable} of 729 colours \
+             no reflectance has, the table within {worst_gap:.4} of the fit there",
+            space.name(),
+            worst.0,
+            worst.1
+        );
+        results.push((space.name(), worst.0, worst_gap));
+    }
+    let bounds = [
+        ("sRGB", 0.05, 0.05),
+        ("Display P3", 0.05, 0.13),
+        ("Rec.2020", 0.37, 0.22),
+        ("ACES2065-1", 0.40, 1.31),
+        ("ACEScg", 0.80, 0.31),
+    ];
+    for ((name, worst, gap), (bound_name, worst_bound, gap_bound)) in results.into_iter().zip(bounds) {
+        assert_eq!(name, bound_name);
+        assert!(worst <= worst_bound && gap <= gap_bound, "{name}: worst {worst}, gap {gap}");
     }
 }

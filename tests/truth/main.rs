@@ -8,4 +8,6 @@ mod ciede2000;
 mod data;
 mod display;
 mod named;
+mod planck;
+mod spaces;
 mod white;

@@ -17,6 +17,8 @@ use std::hint::black_box;
 
 use harness::{Case, measure, median};
 use kernels::{Pcg32, Tables, XorShift32};
+use rayon::prelude::*;
+use rayon::{ThreadPool, ThreadPoolBuilder};
 use speclab::sampling::{PreparedLight, reference, rule::Rule};
 use speclab::spectrum::DenseSpectrum;
 use speclab::{BoxAverage, Center, RegularSpectrum, TabulatedSpectrum, Xyz, data};
@@ -82,6 +84,7 @@ fn main() {
         },
         Row { what: "batch, 2 threads", target: "≥ 1.6× 1 thread", unit: Unit::Throughput(Some(13)) },
     ];
+    let pools = [1, 2].map(|n| ThreadPoolBuilder::new().num_threads(n).build().expect("a thread pool"));
     let mut runs = Vec::new();
     for run in 0..3 {
         let seed = XorShift32(0x9E37_79B9);
@@ -114,8 +117,8 @@ fn main() {
                 calls(|| RegularSpectrum::<16, BoxAverage>::box_average(black_box(light)))
             }),
             Case::new("reference", || calls(|| reference::xyz(black_box(light), black_box(surface)))),
-            Case::new("batch 1", || batch(&prepared, &reflectances, &mut out, 1)),
-            Case::new("batch 2", || batch(&prepared, &reflectances, &mut out2, 2)),
+            Case::new("batch 1", || batch(&prepared, &reflectances, &mut out, &pools[0])),
+            Case::new("batch 2", || batch(&prepared, &reflectances, &mut out2, &pools[1])),
         ];
         let ns = measure(&mut cases, 15, 20.0);
         eprintln!(
@@ -141,17 +144,24 @@ fn calls<T>(mut f: impl FnMut() -> T) -> usize {
 /// Calls per batch of the single-call cases.
 const CALLS: usize = 64;
 
-/// Converts `r` into `out` on `threads` threads; returns spectra converted.
-fn batch(prepared: &PreparedLight<&TabulatedSpectrum>, r: &[f64], out: &mut [Xyz], threads: usize) -> usize {
+/// Converts `r` into `out` on the threads of `pool` (one share each);
+/// returns spectra converted.
+fn batch(
+    prepared: &PreparedLight<&TabulatedSpectrum>,
+    r: &[f64],
+    out: &mut [Xyz],
+    pool: &ThreadPool,
+) -> usize {
+    let threads = pool.current_num_threads();
     if threads == 1 {
         prepared.batch(r, out).expect("valid reflectances");
         return out.len();
     }
     let per = out.len().div_ceil(threads);
-    std::thread::scope(|scope| {
-        for (r, out) in r.chunks(per * 36).zip(out.chunks_mut(per)) {
-            scope.spawn(move || prepared.batch(r, out).expect("valid reflectances"));
-        }
+    pool.install(|| {
+        r.par_chunks(per * 36)
+            .zip(out.par_chunks_mut(per))
+            .for_each(|(r, out)| prepared.batch(r, out).expect("valid reflectances"));
     });
     black_box(&out);
     out.len()

@@ -6,8 +6,7 @@
 //! and 95th-percentile ΔE00 (CIELAB relative to the light's white), and how
 //! often the gamut flag disagrees with the reference's. Deterministic methods
 //! (regular buckets, the reference) run once, with zero spread. Trials run
-//! on all cores with `std::thread::scope`; results do not depend on the
-//! number of threads.
+//! on all cores (rayon); results do not depend on the number of threads.
 //!
 //! ```
 //! use std::num::NonZeroUsize;

@@ -21,7 +21,7 @@
 //! perfect white just fits the display in its own colour
 //! ([`Exposure::fit_white`], after white balance if asked), then the chosen
 //! gamut map and sRGB.
-//! [`speclab_cli::sheet`] lays the swatches out with labels.
+//! `speclab_cli::sheet` lays the swatches out with labels.
 //!
 //! ```
 //! use std::num::NonZeroUsize;

@@ -75,7 +75,7 @@ pub struct TextureRow {
 /// The texture of `surface`: its colour under D65, clipped into [0, 1], and
 /// whether clipping changed it.
 pub fn texture(surface: &Named) -> Result<(LinearSrgb, RgbAlbedo, bool), StudyError> {
-    let measured = RgbSpace::srgb().rgb_of(&surface.spectrum);
+    let measured = LinearSrgb::from(RgbSpace::srgb().rgb_of(&surface.spectrum));
     let rgb = measured.map(|v| v.clamp(0.0, 1.0));
     Ok((rgb, RgbAlbedo::new(rgb)?, rgb != measured))
 }

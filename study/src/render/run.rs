@@ -6,6 +6,7 @@
 use std::time::Instant;
 
 use speclab::carry::{Carry, Fitted, Hero, Lanes, Rgb, with_lanes};
+use speclab::color::LinearRgb;
 use speclab::color::lab::lab;
 use speclab::sampling::binned::BinnedPdf;
 use speclab::sampling::choice::PdfKind;
@@ -47,7 +48,7 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
     match o.way {
         Way::Rgb => {
             let mut rgb = Rgb::new(&setup.light_spectra(), &setup.patches);
-            rgb.surfaces.extend(&setup.colours);
+            rgb.surfaces.extend(setup.colours.iter().map(|&c| LinearRgb::from(c)));
             Ok(with.go(&rgb))
         }
         Way::Fitted => {

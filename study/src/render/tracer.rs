@@ -1,7 +1,8 @@
 //! The path tracer: a closed box of ColorChecker walls, two spheres and
 //! an RGB-textured back wall, lit by one or two square lights in the
 //! ceiling. Lambertian surfaces, next-event estimation to a light chosen
-//! uniformly, cosine-weighted bounces, Russian roulette.
+//! uniformly, cosine-weighted bounces, and pbrt-v4's Russian roulette (on the
+//! throughput's largest component).
 //!
 //! One tracer serves every way of carrying colour (the core's
 //! [`Carry`]): hero wavelengths, a fitted rule, RGB triples, and grey
@@ -239,13 +240,16 @@ pub fn trace<P: Carry>(
             record.light(light, depth + 1, factor * geometry);
         }
         beta *= albedo;
-        if depth >= 2 {
-            let q = paint.luminance(path, beta).clamp(0.05, 1.0);
-            if rng.uniform() >= q {
+        // Russian roulette as pbrt-v4's: after the second bounce, end the
+        // path with probability 1 − max β (the largest component over the
+        // wavelengths or channels), and divide a survivor's β by max β.
+        let survival = paint.max_component(path, beta);
+        if depth >= 2 && survival < 1.0 {
+            if rng.uniform() >= survival {
                 break;
             }
-            beta = paint.scale(beta, 1.0 / q);
-            factor /= q;
+            beta = paint.scale(beta, 1.0 / survival);
+            factor /= survival;
         }
         origin = add(hit.point, scale(n, 1e-6));
         dir = cosine(n, rng);

@@ -102,4 +102,8 @@ impl Carry for Grey {
     fn luminance(&self, _path: &(), beta: f64) -> f64 {
         beta
     }
+
+    fn max_component(&self, _path: &(), beta: f64) -> f64 {
+        beta
+    }
 }
