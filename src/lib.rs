@@ -87,6 +87,8 @@ mod doc_pages {
     pub struct Accuracy;
     #[doc = include_str!("../docs/chart-and-plans.md")]
     pub struct ChartAndPlans;
+    #[doc = include_str!("../docs/color.md")]
+    pub struct Color;
     #[doc = include_str!("../docs/convergence.md")]
     pub struct Convergence;
     #[doc = include_str!("../docs/fitted.md")]

@@ -66,3 +66,35 @@ impl SplitMix64 {
         (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{SplitMix64, derive, mix};
+
+    /// Steele, Lea and Flood's SplitMix64 as Vigna's reference
+    /// `splitmix64.c` outputs it: from state 0, and from 1234567.
+    #[test]
+    fn the_sequence_is_splitmix64s() {
+        let mut zero = SplitMix64::new(0);
+        let got = [zero.next_u64(), zero.next_u64(), zero.next_u64()];
+        assert_eq!(got, [0xE220_A839_7B1D_CDAF, 0x6E78_9E6A_A1B9_65F4, 0x06C4_5D18_8009_454F]);
+        let mut other = SplitMix64::new(1_234_567);
+        assert_eq!(
+            [other.next_u64(), other.next_u64()],
+            [6_457_827_717_110_365_317, 3_203_168_211_198_807_973]
+        );
+        let mut f = SplitMix64::new(0);
+        assert_eq!(f.next_f64(), (0xE220_A839_7B1D_CDAF_u64 >> 11) as f64 / (1u64 << 53) as f64);
+    }
+
+    /// A stream's seed is the finaliser of the base and the stream's
+    /// golden-ratio multiple.
+    #[test]
+    fn derived_seeds_mix_base_and_stream() {
+        let g = super::GOLDEN;
+        assert_eq!(derive(7, 3), mix(7 ^ 3u64.wrapping_mul(g).wrapping_add(g)));
+        assert_ne!(derive(7, 3), derive(7, 4));
+        assert_ne!(derive(7, 3), derive(8, 3));
+        assert_eq!(mix(0), 0);
+    }
+}

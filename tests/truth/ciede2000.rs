@@ -9,10 +9,11 @@ use speclab::{Xyz, data};
 /// The pairs are published to four decimals: half a unit in the last place.
 const TOL: f64 = 0.5e-4;
 
-/// Pairs whose hues lie more than 180° apart and sum to 360° or more,
-/// where Sharma, Wu and Dalal's mean hue is `(h₁ + h₂ − 360°)/2`: ΔE00 as
-/// colour-science 0.4.7 computes it (`delta_E_CIE2000`, which follows
-/// their rule; a peer's output, not published truth). palette 0.7's
+/// Pairs whose hues lie more than 180° apart, summing to 360° or more
+/// (where Sharma, Wu and Dalal's mean hue is `(h₁ + h₂ − 360°)/2`) and to
+/// less (`(h₁ + h₂ + 360°)/2`): ΔE00 as colour-science 0.4.7 computes it
+/// (`delta_E_CIE2000`, which follows their rule; a peer's output, not
+/// published truth). palette 0.7's
 /// `Ciede2000` takes `(h₁ + h₂ + 360°)/2` here, a mean hue 360° off, which
 /// changes Δθ's Gaussian: the chart's ΔE00 moved by up to 7e-8 relative
 /// when the study moved from palette to this function, all of it from this
@@ -22,6 +23,8 @@ fn mean_hue_across_zero_follows_sharma() {
     let peer = [
         ([50.0, 30.0, -5.3], [50.0, -3.0, 17.0], 33.32116971715344),
         ([40.0, 10.0, -17.3], [45.0, -5.0, 28.0], 36.33824769318523),
+        ([50.0, 30.0, 5.3], [50.0, -25.0, -9.0], 50.075722799686744),
+        ([60.0, 5.0, 20.0], [55.0, -1.0, -30.0], 32.747342381229416),
     ];
     for (p, q, want) in peer {
         for de in [ciede2000(p, q), ciede2000(q, p)] {
