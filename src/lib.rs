@@ -8,9 +8,11 @@
 //! - a continuous spectrum, anything that implements [`Spectrum`]
 //!   ([`TabulatedSpectrum`], dense, constant, blackbody, RGB-derived or a
 //!   closure), evaluated at any wavelength in nanometres ([`spectrum`]);
-//! - a set of wavelengths: a [`HeroSample<K>`] (random, with a pdf each),
-//!   the `M` buckets of a [`RegularSpectrum<M>`] (fixed) or the `M`
-//!   wavelengths of a rule fitted to the scene's lights ([`sampling`]);
+//! - a set of wavelengths with their XYZ weights ([`sampling`]), of two
+//!   kinds told apart by type: drawn, a [`HeroSample<K>`] (random, with a
+//!   pdf each), or fixed, a [`FixedWavelengths<M>`] (bucket centres or a
+//!   rule fitted to the scene's lights; no pdf), and the `M` buckets of a
+//!   [`RegularSpectrum<M>`];
 //! - the values at them: [`SampledSpectrum<K>`] or the buckets' values,
 //!   turned into [`Xyz`] and [`LinearSrgb`] ([`color`]).
 //!
@@ -19,45 +21,27 @@
 //! Spectra are read by [`io`] at run time, or turned into static data at
 //! compile time by the `speclab-tables` crate (the built-in data, [`data`],
 //! is made so). This crate is the renderer's core: its dependencies are
-//! [`rand`] (re-exported, the version the API names) and `speclab-tables`.
+//! [`rand`] (re-exported, the version the API names), `speclab-tables` and
+//! `wide` (the SIMD registers of the per-sample arithmetic).
 //! The accuracy study (trials, the comparison grid, charts and plans) is
 //! the crate `speclab-study`, and what its programs show is `speclab-cli`.
 //!
-//! A renderer's inner loop, per sample (values in `f64`, the default):
-//!
-//! ```
-//! use speclab::{data::{lights, patches}, HeroSample, SampledSpectrum, Xyz};
-//! let mut pixel = Xyz::ZERO;
-//! for i in 0..64 {
-//!     let h = HeroSample::<4>::new((i as f64 + 0.5) / 64.0);
-//!     let (le, albedo) = (lights::D65.sample(&h), patches::F4.sample(&h));
-//!     let (mut beta, mut l) = (SampledSpectrum::splat(1.0), SampledSpectrum::zero());
-//!     for _bounce in 0..2 {
-//!         beta *= albedo; // reflect off the patch
-//!         l += beta * le; // and see the light
-//!     }
-//!     pixel += h.to_xyz(l);
-//! }
-//! let pixel = pixel / 64.0;
-//! assert!(pixel.y > 0.0 && pixel.to_linear_srgb().g > pixel.to_linear_srgb().r);
-//! ```
-//!
-//! The same loop as a renderer computing in `f32` writes it: its own
-//! uniform numbers, `f32` tables looked up at the nearest nanometre (the
-//! fast path), one `HeroSample<4, f32>` per path carrying its wavelengths
-//! and weights, and XYZ at the end, summed in `f64` (see
-//! [`spectrum::Float`] on long sums). No conversion is written.
+//! A renderer's inner loop, as one computing in `f32` writes it: its own
+//! uniform numbers, spectra as dense 1 nm tables (the fast path, as
+//! pbrt-v4's), one `HeroSample<4, f32>` per path carrying its wavelengths
+//! and weights (`new` weighs by the dense observer), and XYZ at the end,
+//! summed in `f64` (see [`spectrum::Float`] on long sums). No conversion
+//! is written, and each operation runs four lanes at a time.
 //!
 //! ```
 //! use speclab::{data::{lights, patches}, sampling::reference, HeroSample, SampledSpectrum, Xyz};
-//! use speclab::spectrum::{DenseObserver, DenseSpectrum};
+//! use speclab::spectrum::DenseSpectrum;
 //! let light = DenseSpectrum::new(&lights::F11); // once per scene
 //! let walls = [&patches::G4, &patches::A1].map(DenseSpectrum::new);
-//! let observer = DenseObserver::new();
 //! let mut pixel = Xyz::ZERO;
 //! for i in 0..1024_u16 {
 //!     let u = (f32::from(i) + 0.5) / 1024.0; // the renderer's own number
-//!     let path = HeroSample::<4, f32>::with_observer(u, &observer); // one value per path
+//!     let path = HeroSample::<4, f32>::new(u); // one value per path
 //!     let (le, mut beta, mut l) = (light.sample(&path), SampledSpectrum::splat(1.0), SampledSpectrum::zero());
 //!     for wall in &walls {
 //!         beta *= wall.sample(&path); // a bounce off each wall
@@ -70,6 +54,28 @@
 //! let g4_a1 = reference::xyz_of_product(&[&lights::F11, &patches::G4, &patches::A1]);
 //! let exact = (g4 + g4_a1) * 0.5;
 //! assert!((pixel.y - exact.y).abs() < 2e-3 * exact.y, "{pixel:?} against {exact:?}");
+//! ```
+//!
+//! The same loop as the reference computes it: `f64` (the default),
+//! the exact interpolants of the tables, and the exact observer
+//! ([`HeroSample::exact`]): unbiased for the exact integrals the
+//! estimates are judged by.
+//!
+//! ```
+//! use speclab::{data::{lights, patches}, HeroSample, SampledSpectrum, Xyz};
+//! let mut pixel = Xyz::ZERO;
+//! for i in 0..64 {
+//!     let h = HeroSample::<4>::exact((i as f64 + 0.5) / 64.0);
+//!     let (le, albedo) = (lights::D65.sample(&h), patches::F4.sample(&h));
+//!     let (mut beta, mut l) = (SampledSpectrum::splat(1.0), SampledSpectrum::zero());
+//!     for _bounce in 0..2 {
+//!         beta *= albedo; // reflect off the patch
+//!         l += beta * le; // and see the light
+//!     }
+//!     pixel += h.to_xyz(l);
+//! }
+//! let pixel = pixel / 64.0;
+//! assert!(pixel.y > 0.0 && pixel.to_linear_srgb().g > pixel.to_linear_srgb().r);
 //! ```
 
 #![warn(missing_docs)]
@@ -138,7 +144,9 @@ pub use spectrum::WIDTH;
 pub use color::{LinearSrgb, Xyz};
 pub use error::Error;
 pub use rand;
-pub use sampling::{BoxAverage, Center, HeroSample, RegularSpectrum, SampledWavelengths};
+#[allow(deprecated)]
+pub use sampling::SampledWavelengths;
+pub use sampling::{BoxAverage, Center, FixedWavelengths, HeroSample, RegularSpectrum};
 pub use spectrum::{
     Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Role, SampledSpectrum, Spectrum, TabulatedSpectrum,
     data,

@@ -9,7 +9,7 @@ use crate::error::Error;
 use crate::sampling::pdf::WavelengthPdf;
 use crate::sampling::reference;
 use crate::sampling::rule::Rule;
-use crate::sampling::{Emission, HeroSample, SampledWavelengths};
+use crate::sampling::{Emission, FixedWavelengths, HeroSample};
 use crate::spectrum::observer::Y_BAR_INTEGRAL;
 use crate::spectrum::{Float, Observer, SampledSpectrum, Spectrum};
 
@@ -108,7 +108,7 @@ impl<const CAP: usize, T: Float> Fitted<CAP, T> {
     /// `i`). An [`Error::NoMass`] for no rules; an [`Error::Count`] for
     /// a rule larger than `CAP`.
     pub fn new(rules: &[Rule], lights: &[impl Spectrum], surfaces: &[impl Spectrum]) -> Result<Self, Error> {
-        let each: Vec<SampledWavelengths<CAP, T>> =
+        let each: Vec<FixedWavelengths<CAP, T>> =
             rules.iter().map(Rule::wavelengths).collect::<Result<_, _>>()?;
         let at = each.first().ok_or(Error::NoMass)?;
         Ok(Fitted {

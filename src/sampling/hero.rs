@@ -10,19 +10,22 @@
 //! hands its wavelengths and their pdfs to [`HeroSample::from_wavelengths`],
 //! or its uniform number and a [`WavelengthPdf`] to [`HeroSample::from_pdf`].
 //!
-//! A hero sample is a [`SampledWavelengths<K, T>`]: drawing it looks up the
-//! observer once per wavelength and keeps the weights `c̄(λⱼ)/(K·pdfⱼ)`, so
-//! a sample's XYZ contribution `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)` is one weighted sum
-//! (a wavelength of pdf 0, for example one
-//! [terminated](HeroSample::terminate_secondary), contributes nothing).
-//! The exact observer ([`Cie1931`]) is the default; a dense one
-//! (`DenseObserver`) is the fast path ([`HeroSample::with_observer`]).
+//! A hero sample is the drawn kind of wavelengths (see
+//! [`super::wavelengths`]): drawing it looks up the observer once per
+//! wavelength and keeps the weights `c̄(λⱼ)/(K·pdfⱼ)`, so a sample's XYZ
+//! contribution `Σⱼ c̄(λⱼ)·vⱼ / (K·pdfⱼ)` is one weighted sum (a wavelength
+//! of pdf 0, for example one [terminated](HeroSample::terminate_secondary),
+//! contributes nothing). The constructors without an observer weigh by the
+//! dense one (`DenseObserver`: a load per wavelength, as pbrt-v4); the
+//! exact one ([`Cie1931`]) is [`HeroSample::exact`] and the `…_with`
+//! constructors' choice, and the estimators here, which are judged
+//! against the exact integrals, use it.
 //! [`estimate`] averages n samples.
 //!
 //! ```
 //! use rand::{SeedableRng, rngs::StdRng};
 //! use speclab::{data::{lights, patches}, sampling::hero, HeroSample};
-//! let h = HeroSample::<4>::new(0.0);
+//! let h = HeroSample::<4>::exact(0.0);
 //! assert_eq!(h.lambda(), &[380.0, 467.5, 555.0, 642.5]);
 //! let v = lights::D65.sample(&h) * patches::A1.sample(&h);
 //! let one = h.to_xyz(v); // a one-sample estimate
@@ -44,13 +47,19 @@ use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::pdf::{Uniform, WavelengthPdf};
 use crate::sampling::strata::Strata;
-use crate::sampling::wavelengths::{SampledWavelengths, dot_slices};
+use crate::sampling::wavelengths::{Weighted, dot_slices, weighted_wavelengths};
+use crate::spectrum::DenseObserver;
 use crate::spectrum::observer::{self, Cie1931, Observer};
 use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
-/// K wavelengths drawn together (a hero and K − 1 companions) with their
-/// weights `c̄(λⱼ)/(K·pdfⱼ)`: a [`SampledWavelengths`] filled by drawing.
-pub type HeroSample<const K: usize, T = f64> = SampledWavelengths<K, T>;
+/// K wavelengths drawn together (a hero and K − 1 companions), each with
+/// its density, and their weights `c̄(λⱼ)/(K·pdfⱼ)`: the drawn kind of
+/// wavelengths (see [`FixedWavelengths`](super::wavelengths::FixedWavelengths)
+/// for the fixed kind, which has no density).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HeroSample<const K: usize, T: Float = f64>(pub(crate) Weighted<K, T>);
+
+weighted_wavelengths!(HeroSample);
 
 /// The usual hero width: four wavelengths per sample.
 pub const USUAL_K: usize = 4;
@@ -59,15 +68,21 @@ pub const USUAL_K: usize = 4;
 /// ([`estimate_width`]).
 pub const MAX_WIDTH: usize = 64;
 
-impl<const K: usize, T: Float> SampledWavelengths<K, T> {
+impl<const K: usize, T: Float> HeroSample<K, T> {
     /// Compile-time guard: a sample has at least one wavelength.
     const NONZERO: () = assert!(K > 0, "HeroSample needs at least one wavelength (K > 0)");
 
     /// The density of a uniform wavelength, 1/nm: `1/W` over 380–730 nm.
     pub const UNIFORM_PDF: f64 = 1.0 / LAMBDA_WIDTH;
 
-    /// The uniform hero sample for `u`: `λⱼ = 380 + W·((u + j/K) mod 1)`,
-    /// each of pdf `1/W`, weighted by the exact observer. The wavelengths
+    /// The uniform hero sample for `u`, weighted by the dense observer
+    /// ([`DenseObserver`]: the CIE 1931 observer at the nearest whole
+    /// nanometre, as pbrt-v4 looks it up; its estimates are unbiased for
+    /// the 1 nm sum, within 2e-6 of the exact integrals here, see
+    /// `spectrum::dense`): the fast path, and the one a renderer wants.
+    /// [`HeroSample::exact`] weighs by the exact observer.
+    ///
+    /// `λⱼ = 380 + W·((u + j/K) mod 1)`, each of pdf `1/W`. The wavelengths
     /// are found in fixed point, as a hand-tuned kernel finds them: `u·W`
     /// rounded down to 2⁻¹⁶ nm, rotated by `W/K` to the same resolution
     /// (each wavelength stays uniform: a fixed rotation of a uniform
@@ -78,11 +93,20 @@ impl<const K: usize, T: Float> SampledWavelengths<K, T> {
     #[inline(always)]
     #[must_use]
     pub fn new(u: T) -> Self {
+        Self::with_observer(u, &DenseObserver)
+    }
+
+    /// [`HeroSample::new`] weighted by the exact observer ([`Cie1931`],
+    /// the interpolated 5 nm tables of Appendix 1): the reference's
+    /// estimator, unbiased for the exact integrals. Costs a cubic
+    /// evaluation of the three matching functions per wavelength.
+    #[inline(always)]
+    #[must_use]
+    pub fn exact(u: T) -> Self {
         Self::with_observer(u, &Cie1931)
     }
 
-    /// [`HeroSample::new`] with the weights of `observer`: a
-    /// `DenseObserver` for the fast path.
+    /// [`HeroSample::new`] with the weights of `observer`.
     #[inline(always)]
     #[must_use]
     pub fn with_observer(u: T, observer: &impl Observer) -> Self {
@@ -99,22 +123,24 @@ impl<const K: usize, T: Float> SampledWavelengths<K, T> {
         let p: [u32; K] = std::array::from_fn(position);
         let lambda = std::array::from_fn(|j| T::from_f64(LAMBDA_MIN + f64::from(p[j]) * (1.0 / 65536.0)));
         let nearest = std::array::from_fn(|j| ((p[j] + 0x8000) >> 16) as u16);
-        let h = Self::placed(lambda, nearest);
+        let h = HeroSample(Weighted { lambda, nearest, rows: [[T::ZERO; 4]; K] });
         Self::weighted(h, [T::from_f64(LAMBDA_WIDTH); K], observer)
     }
 
     /// The sample for `u` under the density `pdf`, rotated in primary-sample
     /// space: `λⱼ = P⁻¹((u + j/K) mod 1)`, so that every `λⱼ` has density p
-    /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased. With
-    /// [`Uniform`] this is [`HeroSample::new`]. `u` is taken as in
+    /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased; weighted by
+    /// the dense observer, as [`HeroSample::new`] (with [`Uniform`], this is
+    /// [`HeroSample::new`]'s sample to rounding). `u` is taken as in
     /// [`HeroSample::new`].
     #[inline(always)]
     #[must_use]
     pub fn from_pdf<P: WavelengthPdf + ?Sized>(u: T, pdf: &P) -> Self {
-        Self::from_pdf_with(u, pdf, &Cie1931)
+        Self::from_pdf_with(u, pdf, &DenseObserver)
     }
 
-    /// [`HeroSample::from_pdf`] with the weights of `observer`.
+    /// [`HeroSample::from_pdf`] with the weights of `observer` ([`Cie1931`]
+    /// for the exact ones).
     #[inline(always)]
     #[must_use]
     pub fn from_pdf_with<P: WavelengthPdf + ?Sized>(u: T, pdf: &P, observer: &impl Observer) -> Self {
@@ -125,16 +151,17 @@ impl<const K: usize, T: Float> SampledWavelengths<K, T> {
             let (drawn, reciprocal) = pdf.sample_with_inv_pdf(rotation(u, j, K));
             (*l, *w) = (T::from_f64(drawn), T::from_f64(reciprocal));
         }
-        Self::weighted(Self::unweighted(lambda), inv_pdf, observer)
+        Self::weighted(HeroSample(Weighted::at(lambda)), inv_pdf, observer)
     }
 
     /// The sample of wavelengths `lambda` (nm) drawn with densities `pdf`
-    /// (1/nm), from a renderer's own sampler and distribution. Each
-    /// wavelength must be finite and each pdf finite and non-negative with a
-    /// finite reciprocal; a pdf of 0 marks a wavelength that contributes
-    /// nothing.
+    /// (1/nm), from a renderer's own sampler and distribution, weighted by
+    /// the dense observer. Each wavelength must be finite and each pdf
+    /// finite and non-negative with a finite reciprocal (else an
+    /// [`Error::SampleWavelength`]); a pdf of 0 marks a wavelength that
+    /// contributes nothing.
     pub fn from_wavelengths(lambda: [T; K], pdf: [T; K]) -> Result<Self, Error> {
-        Self::from_wavelengths_with(lambda, pdf, &Cie1931)
+        Self::from_wavelengths_with(lambda, pdf, &DenseObserver)
     }
 
     /// [`HeroSample::from_wavelengths`] with the weights of `observer`.
@@ -154,42 +181,33 @@ impl<const K: usize, T: Float> SampledWavelengths<K, T> {
             }
             *w = reciprocal;
         }
-        Ok(Self::weighted(Self::unweighted(lambda), inv_pdf, observer))
+        Ok(Self::weighted(HeroSample(Weighted::at(lambda)), inv_pdf, observer))
     }
 
     /// The sample `h` (wavelengths drawn with reciprocal densities
-    /// `inv_pdf`) with its weights: `c̄(λⱼ)·inv_pdfⱼ/K` from `observer`, and
-    /// `w₀ = inv_pdfⱼ/K`.
+    /// `inv_pdf`) with its weights from `observer`.
     #[inline(always)]
-    fn weighted(mut h: Self, inv_pdf: [T; K], observer: &impl Observer) -> Self {
+    fn weighted(h: Self, inv_pdf: [T; K], observer: &impl Observer) -> Self {
         let cmf = observer.xyz_bar_at(&h);
         let per_k = T::from_f64(1.0 / K as f64);
-        let s: [T; K] = std::array::from_fn(|j| inv_pdf[j] * per_k);
-        h.weights = [
-            std::array::from_fn(|j| cmf[j][0] * s[j]),
-            std::array::from_fn(|j| cmf[j][1] * s[j]),
-            std::array::from_fn(|j| cmf[j][2] * s[j]),
-            s,
-        ];
-        h
+        HeroSample(h.0.drawn(cmf, inv_pdf.map(|w| w * per_k)))
     }
 
-    /// The density of each wavelength, 1/nm (0 for a dropped wavelength,
-    /// and for fixed rules, which have none).
+    /// The density of each wavelength, 1/nm (0 for a dropped wavelength).
     #[inline]
     #[must_use]
     pub fn pdf(&self) -> [T; K] {
         let k = T::from_f64(K as f64);
-        self.weights[3].map(|w| if w > T::ZERO { T::ONE / (k * w) } else { T::ZERO })
+        self.0.rows.map(|[.., w]| if w > T::ZERO { T::ONE / (k * w) } else { T::ZERO })
     }
 
     /// The reciprocal of each wavelength's density, nm (0 for a dropped
-    /// wavelength and for fixed rules).
+    /// wavelength).
     #[inline]
     #[must_use]
     pub fn inv_pdf(&self) -> [T; K] {
         let k = T::from_f64(K as f64);
-        self.weights[3].map(|w| w * k)
+        self.0.rows.map(|[.., w]| w * k)
     }
 
     /// Keeps the hero alone (pbrt-v4's `TerminateSecondary`, for dispersion:
@@ -203,18 +221,16 @@ impl<const K: usize, T: Float> SampledWavelengths<K, T> {
             return;
         }
         let k = T::from_f64(K as f64);
-        for row in &mut self.weights {
-            row[0] *= k;
-            row[1..].fill(T::ZERO);
-        }
+        let rows = &mut self.0.rows;
+        rows[0] = rows[0].map(|w| w * k);
+        rows[1..].fill([T::ZERO; 4]);
     }
 
-    /// True if only the hero contributes (always true for `K = 1`, and for
-    /// fixed rules, which have no density).
+    /// True if only the hero contributes (always true for `K = 1`).
     #[inline]
     #[must_use]
     pub fn secondary_terminated(&self) -> bool {
-        self.weights[3][1..].iter().all(|&w| w == T::ZERO)
+        self.0.rows[1..].iter().all(|&[.., w]| w == T::ZERO)
     }
 }
 
@@ -278,7 +294,7 @@ pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>
     let sum: Xyz = strata
         .points(n.get(), K, rng)
         .map(|u| {
-            let h = HeroSample::<K>::from_pdf(u, pdf);
+            let h = HeroSample::<K>::from_pdf_with(u, pdf, &Cie1931);
             h.to_xyz(light.sample(&h) * surface.sample(&h))
         })
         .sum();

@@ -1,18 +1,18 @@
 //! Where spectra are looked at, and how their product becomes XYZ.
 //!
-//! - [`SampledWavelengths<K, T>`]: the one noun, K wavelengths with their
-//!   XYZ weights, in `f64` or `f32`; every way of choosing wavelengths
-//!   fills one, and its `to_xyz` is the one estimator.
-//! - [`HeroSample<K, T>`] (that type, drawn): K random wavelengths with a
-//!   pdf each (K = 1 is plain random sampling, K = 4 the usual hero
-//!   sampling); a spectrum sampled at them is a
-//!   [`SampledSpectrum<K, T>`](crate::SampledSpectrum).
+//! - Wavelengths with their XYZ weights, in `f64` or `f32`, of two kinds
+//!   told apart by type: drawn, [`HeroSample<K, T>`] (K random wavelengths
+//!   with a pdf each; K = 1 is plain random sampling, K = 4 the usual hero
+//!   sampling), and fixed, [`FixedWavelengths<M, T>`] (a rule's, with no
+//!   pdf); a spectrum sampled at either is a
+//!   [`SampledSpectrum<K, T>`](crate::SampledSpectrum), and one weighted
+//!   sum turns its values into XYZ (see [`wavelengths`]).
 //! - [`RegularSpectrum<M, B, T>`](RegularSpectrum): M fixed buckets over
 //!   380–730 nm, filled by center samples ([`Center`]) or exact bucket means
 //!   ([`BoxAverage`]); [`buckets`]: the two rules.
 //! - [`rule::Rule`]: M wavelengths and weights chosen at run time, buckets
 //!   or [`fitted`] to a scene's lights over a reflectance prior
-//!   (`prior.rs`); a renderer takes it as a `SampledWavelengths<M, T>`.
+//!   (`prior.rs`); a renderer takes it as a `FixedWavelengths<M, T>`.
 //! - [`pdf`]: wavelength densities (uniform, visible, following a light)
 //!   behind the [`pdf::WavelengthPdf`] trait, and [`binned`]: any of them
 //!   as equal-probability bins, sampled without a search; [`strata`]: how
@@ -85,12 +85,12 @@ pub mod rule;
 pub mod seed;
 pub mod strata;
 pub mod variance;
-mod wavelengths;
+pub mod wavelengths;
 
 pub use hero::HeroSample;
 pub use prepared::PreparedLight;
 pub use regular::{BoxAverage, Center, RegularSpectrum};
-pub use wavelengths::{Emission, SampledWavelengths};
+pub use wavelengths::{Emission, FixedWavelengths};
 
 /// Centre buckets: renamed.
 #[deprecated(since = "0.2.0", note = "use `Center`")]
@@ -99,3 +99,9 @@ pub type Centre = Center;
 /// A spectrum's values at K wavelengths: moved to the spectrum floor.
 #[deprecated(since = "0.2.0", note = "use `speclab::SampledSpectrum` (or `spectrum::SampledSpectrum`)")]
 pub type SampledSpectrum<const K: usize, T = f64> = crate::spectrum::SampledSpectrum<K, T>;
+
+/// The one wavelength type of 0.1: split into the drawn kind, which
+/// keeps this name's methods and its pdf ([`HeroSample`]), and the fixed
+/// kind, which has no pdf ([`FixedWavelengths`]).
+#[deprecated(since = "0.2.0", note = "use `HeroSample` (drawn) or `FixedWavelengths` (a rule's)")]
+pub type SampledWavelengths<const K: usize, T = f64> = HeroSample<K, T>;

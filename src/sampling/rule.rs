@@ -30,7 +30,7 @@
 use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::buckets::{BucketRule, center};
-use crate::sampling::wavelengths::{SampledWavelengths, dot_slices};
+use crate::sampling::wavelengths::{FixedWavelengths, Weighted, dot_slices};
 use crate::spectrum::{Float, LAMBDA_WIDTH, Spectrum};
 
 /// The most wavelengths a rule takes (buckets and fitted rules alike).
@@ -194,7 +194,7 @@ impl Rule {
     /// assert!(rule.wavelengths::<8, f64>().is_err());
     /// # Ok::<(), speclab::Error>(())
     /// ```
-    pub fn wavelengths<const M: usize, T: Float>(&self) -> Result<SampledWavelengths<M, T>, Error> {
+    pub fn wavelengths<const M: usize, T: Float>(&self) -> Result<FixedWavelengths<M, T>, Error> {
         let m = self.m();
         if !(m..=MAX_M).contains(&M) {
             return Err(Error::Count { what: "lanes for the rule", found: M, min: m, max: MAX_M });
@@ -204,8 +204,7 @@ impl Rule {
         }
         let lambda = std::array::from_fn(|i| T::from_f64(self.lambda[i.min(m - 1)]));
         let weight = |c: usize, i: usize| if i < m { self.scale * self.weights[c][i] } else { 0.0 };
-        let row = |c: usize| std::array::from_fn(|i| T::from_f64(weight(c, i)));
-        Ok(SampledWavelengths::from_parts(lambda, [row(0), row(1), row(2), [T::ZERO; M]]))
+        Ok(FixedWavelengths(Weighted::at(lambda).fixed(|c, i| T::from_f64(weight(c, i)))))
     }
 }
 

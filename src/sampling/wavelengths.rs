@@ -1,211 +1,279 @@
-//! The estimator's one noun: [`SampledWavelengths<K, T>`], K wavelengths
-//! with their XYZ weights, in `f64` (the default) or `f32`.
+//! Wavelengths with their XYZ weights, in two kinds told apart by type
+//! (pbrt-v4's `SampledWavelengths`, split where it means something):
 //!
-//! Every way of choosing wavelengths fills one: a hero sample when it is
-//! drawn (`HeroSample<K, T>` is this type: weights `c̄(λⱼ)/(K·pdfⱼ)`, see
-//! [`super::hero`]), equidistant buckets (weights `W/M·c̄ᵢ`, see
-//! [`super::regular`]) and a rule fitted to a scene's lights (fitted
-//! weights, see [`super::rule`]). A spectrum sampled at it is a
-//! [`SampledSpectrum<K, T>`], and the colour of a value `v` is one weighted
-//! sum, written once here for every count (the study's run-time counts go
-//! through the same function on slices):
+//! - **drawn**, [`HeroSample<K, T>`](super::HeroSample): random
+//!   wavelengths, each with a density; weights `c̄(λⱼ)/(K·pdfⱼ)`; `pdf`,
+//!   `inv_pdf` and `terminate_secondary` exist only here;
+//! - **fixed**, [`FixedWavelengths<M, T>`]: a rule's wavelengths (bucket
+//!   centres, [`Bucketing::wavelengths`](super::regular::Bucketing::wavelengths),
+//!   or a fitted rule, [`Rule::wavelengths`](super::rule::Rule::wavelengths))
+//!   with its weights, and no density.
 //!
-//! `XYZ꜀ = Σⱼ w꜀ⱼ·vⱼ`.
+//! Both hold the same three things and answer the same questions: the
+//! wavelengths (nm), each one's nearest whole nanometre (found once, for
+//! dense tables), and one row of weights per wavelength,
+//! `[w_X, w_Y, w_Z, w₀]` (`w₀ = 1/(K·pdf)` for drawn wavelengths, 0 for
+//! fixed ones). A spectrum sampled at them is a
+//! [`SampledSpectrum<K, T>`], and the colour of values `v` is one weighted
+//! sum, written once for every count and both kinds (and for
+//! `RegularSpectrum`'s buckets):
 //!
-//! The weights are four rows of K, `w_X`, `w_Y`, `w_Z` and `w₀`, where
-//! `w₀ = 1/(K·pdfⱼ)` for drawn wavelengths and 0 for fixed rules, which
-//! have no density: a colour is three dot products, a luminance one. The
-//! value is `Copy` and small (K = 4 in `f32`: 16 bytes of wavelengths, 8 of
-//! their whole nanometres, 64 of weights); nothing here allocates.
+//! `XYZ = Σⱼ rowⱼ·vⱼ`,
+//!
+//! one fused multiply-add per wavelength into a four-lane register whose
+//! lanes are X, Y, Z (see `spectrum::simd`). The values are `Copy` and
+//! small (K = 4 in `f32`: 16 bytes of wavelengths, 8 of whole
+//! nanometres, 64 of weights); nothing here allocates.
+//!
+//! **What the luminance weights sum to** (`Σⱼ w_Yⱼ`, the Y of a spectrum
+//! that is 1 everywhere; [`luminance`](FixedWavelengths::luminance)
+//! divides by `Y_BAR_INTEGRAL`, 106.86 nm, so that a constant comes out
+//! as itself):
+//! - drawn: a one-sample estimate of `∫ȳ dλ`, unbiased for the observer
+//!   it was weighted by (its mean over draws is `Y_BAR_INTEGRAL` for the
+//!   exact observer, and the integral of the dense observer's steps, 6e-8
+//!   from it, for the dense one);
+//! - box buckets: exactly `Y_BAR_INTEGRAL`;
+//! - centre buckets: the M-point midpoint sum of ȳ (2.3 % low at M = 4,
+//!   within 1e-4 from M = 16);
+//! - a fitted rule: whatever its fit to the scene's lights made it (under
+//!   F11 at M = 10 about 77 nm): a rule reproduces light × reflectance
+//!   products, not a reflectance alone, so its luminance of a throughput
+//!   without the light means nothing, and Russian roulette on it should use
+//!   the largest value instead.
+//!
+//! (`tests/properties/luminance.rs` holds each of these.)
 //!
 //! ```
 //! use speclab::{data::{lights, patches}, HeroSample, SampledSpectrum};
-//! let h = HeroSample::<4, f32>::new(0.25_f32); // drawn: wavelengths and weights
+//! let h = HeroSample::<4, f32>::new(0.25); // drawn, the dense observer
 //! let v: SampledSpectrum<4, f32> = lights::D65.sample(&h) * patches::F4.sample(&h);
 //! let xyz = h.to_xyz(v); // Σ w·v, in f32, as f64 XYZ
 //! assert!(xyz.y > xyz.x && (h.y(v) - h.y_weights().dot(&v)).abs() <= 1e-6 * h.y(v));
 //! ```
+//!
+//! A fixed rule has no density:
+//!
+//! ```compile_fail
+//! use speclab::{data::lights, sampling::rule::Rule};
+//! let at = Rule::fit(&[&lights::F11], 10).unwrap().wavelengths::<10, f32>().unwrap();
+//! let pdf = at.pdf(); // no such method: fixed wavelengths are not drawn
+//! ```
 
 use crate::color::Xyz;
 use crate::spectrum::lookup::nearest_nm;
-use crate::spectrum::{Float, SampledSpectrum, Spectrum, Wavelengths};
+use crate::spectrum::simd::weighted_sum;
+use crate::spectrum::{Float, SampledSpectrum};
 
-/// K wavelengths (nm) and their XYZ weights: where spectra are sampled,
-/// and how their values become a colour.
+/// What both kinds hold: K wavelengths, their nearest whole nanometres,
+/// and a row `[w_X, w_Y, w_Z, w₀]` per wavelength.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SampledWavelengths<const K: usize, T: Float = f64> {
+pub(crate) struct Weighted<const K: usize, T: Float> {
     pub(crate) lambda: [T; K],
     /// Each wavelength's nearest whole nanometre (see
-    /// [`Wavelengths::nearest_nm`]), found once.
-    nearest: [u16; K],
-    /// The rows `w_X`, `w_Y`, `w_Z`, `w₀`, one weight per wavelength each.
-    pub(crate) weights: [[T; K]; 4],
+    /// [`crate::spectrum::Wavelengths::nearest_nm`]), found once.
+    pub(crate) nearest: [u16; K],
+    /// One row per wavelength: `w_X`, `w_Y`, `w_Z`, `w₀`.
+    pub(crate) rows: [[T; 4]; K],
 }
 
-impl<const K: usize, T: Float> SampledWavelengths<K, T> {
-    /// Wavelengths and their weights (rows `w_X`, `w_Y`, `w_Z`, `w₀`).
+impl<const K: usize, T: Float> Weighted<K, T> {
+    /// Wavelengths whose nearest whole nanometres are to be found.
     #[inline(always)]
-    pub(crate) fn from_parts(lambda: [T; K], weights: [[T; K]; 4]) -> Self {
+    pub(crate) fn at(lambda: [T; K]) -> Self {
         let nearest = std::array::from_fn(|j| nearest_nm(lambda[j].to_f64()));
-        SampledWavelengths { lambda, nearest, weights }
+        Weighted { lambda, nearest, rows: [[T::ZERO; 4]; K] }
     }
 
-    /// Wavelengths whose nearest whole nanometres are known (as
-    /// [`Wavelengths::nearest_nm`] would find them), weights to be filled.
+    /// Drawn weights: `[x̄, ȳ, z̄, 1]·sⱼ` (so `w₀ = sⱼ`), with
+    /// `sⱼ = 1/(K·pdfⱼ)` and `cmf` the observer's rows at the
+    /// wavelengths: one four-lane multiplication per wavelength.
     #[inline(always)]
-    pub(crate) fn placed(lambda: [T; K], nearest: [u16; K]) -> Self {
-        SampledWavelengths { lambda, nearest, weights: [[T::ZERO; K]; 4] }
+    pub(crate) fn drawn(mut self, cmf: [[T; 4]; K], s: [T; K]) -> Self {
+        self.rows = std::array::from_fn(|j| T::array(T::v4(cmf[j]) * T::splat(s[j])));
+        self
     }
 
-    /// Wavelengths with their weights still to be filled (from an
-    /// observer, which needs the wavelengths' places first).
+    /// Fixed weights: `weight(c, j)` for channel c of wavelength j, and
+    /// `w₀ = 0`.
     #[inline(always)]
-    pub(crate) fn unweighted(lambda: [T; K]) -> Self {
-        Self::from_parts(lambda, [[T::ZERO; K]; 4])
+    pub(crate) fn fixed(mut self, weight: impl Fn(usize, usize) -> T) -> Self {
+        self.rows = std::array::from_fn(|j| [weight(0, j), weight(1, j), weight(2, j), T::ZERO]);
+        self
     }
 
-    /// The wavelengths, nm (a hero sample's hero first).
-    #[inline]
-    #[must_use]
-    pub fn lambda(&self) -> &[T; K] {
-        &self.lambda
-    }
-
-    /// The weights, nm: rows `w_X`, `w_Y`, `w_Z` (XYZ is `Σⱼ w꜀ⱼ·vⱼ`) and
-    /// `w₀` (`1/(K·pdfⱼ)` for drawn wavelengths, 0 for fixed rules).
-    #[inline]
-    #[must_use]
-    pub fn weights(&self) -> &[[T; K]; 4] {
-        &self.weights
-    }
-
-    /// `s` at the wavelengths (what `s.sample(&self)` gives).
+    /// `[X, Y, Z, Σ w₀·v]` of values `v`, in `T`.
     #[inline(always)]
-    #[must_use]
-    pub fn sample(&self, s: &impl Spectrum) -> SampledSpectrum<K, T> {
-        s.sample(self)
+    pub(crate) fn sums(&self, v: &SampledSpectrum<K, T>) -> [T; 4] {
+        weighted_sum(&self.rows, &v.values)
     }
 
-    /// The XYZ of a spectrum with values `v` at these wavelengths:
-    /// `Σⱼ w꜀ⱼ·vⱼ`, summed in `T`, returned in `f64` (a pixel's sum of
-    /// many estimates is then exact to `f64`). The assignment's convention,
-    /// spectrum·nm; [`Xyz::normalized`] gives a renderer's (a constant 1
-    /// has `Y = 1`).
-    #[inline(always)]
-    #[must_use]
-    pub fn to_xyz(&self, v: SampledSpectrum<K, T>) -> Xyz {
-        let [x, y, z, _] = &self.weights;
-        Xyz::new(dot(x, &v.values).to_f64(), dot(y, &v.values).to_f64(), dot(z, &v.values).to_f64())
-    }
-
-    /// The luminance alone, `Σⱼ w_Yⱼ·vⱼ`: the Y of
-    /// [`SampledWavelengths::to_xyz`] before rounding to `f64`, for Russian
-    /// roulette and other decisions. In the units of `v` times nm, like
-    /// every Y here: divide by
-    /// [`Y_BAR_INTEGRAL`](crate::spectrum::observer::Y_BAR_INTEGRAL) for
-    /// the luminance of a constant spectrum to come out as that constant.
-    #[inline(always)]
-    #[must_use]
-    pub fn y(&self, v: SampledSpectrum<K, T>) -> T {
-        dot(&self.weights[1], &v.values)
-    }
-
-    /// The weights of [`SampledWavelengths::y`], `w_Yⱼ`: `v.dot(&w)` is
-    /// `y(v)` to rounding, for any `v`. A path keeps its wavelengths, so a
-    /// renderer takes these once per path and each bounce's luminance is a
-    /// dot product of K numbers.
-    ///
-    /// ```
-    /// use speclab::{data::patches, HeroSample};
-    /// let h = HeroSample::<4>::new(0.3);
-    /// let (w, albedo) = (h.y_weights(), patches::F4.sample(&h));
-    /// assert!((albedo.dot(&w) - h.y(albedo)).abs() <= 1e-12 * h.y(albedo));
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn y_weights(&self) -> SampledSpectrum<K, T> {
-        SampledSpectrum::new(self.weights[1])
-    }
-
-    /// A light's emission folded into the XYZ weights: the colour any
-    /// throughput `β` (at these wavelengths) carries from `light` is then
-    /// `emission.xyz(β)`, three dot products, the light evaluated once. A
-    /// renderer with several lights keeps one per light, each from that
-    /// light's own weights ([`Rule::fit_each`](super::rule::Rule::fit_each)).
-    ///
-    /// ```
-    /// use speclab::{data::{lights, patches}, HeroSample};
-    /// let h = HeroSample::<4>::new(0.3);
-    /// let beta = patches::G4.sample(&h);
-    /// let folded = h.emission(&lights::F11).xyz(beta);
-    /// let direct = h.to_xyz(beta * lights::F11.sample(&h));
-    /// assert!((folded.y - direct.y).abs() <= 1e-12 * direct.y);
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn emission(&self, light: &impl Spectrum) -> Emission<K, T> {
-        let le = light.sample(self).values;
-        Emission { weights: std::array::from_fn(|c| std::array::from_fn(|j| self.weights[c][j] * le[j])) }
-    }
-
-    /// The same wavelengths and weights in precision `U` (a rule fitted in
-    /// `f64`, for a renderer in `f32`).
-    #[must_use]
-    pub fn cast<U: Float>(&self) -> SampledWavelengths<K, U> {
+    /// The same wavelengths and weights in precision `U`.
+    pub(crate) fn cast<U: Float>(&self) -> Weighted<K, U> {
         let convert = |v: T| U::from_f64(v.to_f64());
-        let weights = std::array::from_fn(|c| std::array::from_fn(|j| convert(self.weights[c][j])));
-        SampledWavelengths::from_parts(std::array::from_fn(|j| convert(self.lambda[j])), weights)
+        Weighted {
+            lambda: self.lambda.map(convert),
+            nearest: self.nearest,
+            rows: self.rows.map(|row| row.map(convert)),
+        }
     }
 }
 
-impl<const K: usize, T: Float> Wavelengths<K, T> for SampledWavelengths<K, T> {
-    #[inline(always)]
-    fn lambda(&self) -> &[T; K] {
-        &self.lambda
-    }
-
-    /// Found once, when the wavelengths were set.
-    #[inline(always)]
-    fn nearest_nm(&self) -> [u16; K] {
-        self.nearest
-    }
+/// `[X, Y, Z, _]` in `T` as an [`Xyz`].
+#[inline(always)]
+pub(crate) fn xyz<T: Float>([x, y, z, _]: [T; 4]) -> Xyz {
+    Xyz::new(x.to_f64(), y.to_f64(), z.to_f64())
 }
+
+/// What drawn and fixed wavelengths share: the wavelengths, their
+/// weights, sampling, XYZ, luminance and a light's emission folded into
+/// the weights, for a type `$name<K, T>` holding a [`Weighted`] as `.0`.
+macro_rules! weighted_wavelengths {
+    ($name:ident) => {
+        impl<const K: usize, T: $crate::spectrum::Float> $name<K, T> {
+            /// The wavelengths, nm.
+            #[inline]
+            #[must_use]
+            pub fn lambda(&self) -> &[T; K] {
+                &self.0.lambda
+            }
+
+            /// The weights, one row `[w_X, w_Y, w_Z, w₀]` per wavelength:
+            /// XYZ is `Σⱼ rowⱼ·vⱼ`; `w₀` is `1/(K·pdfⱼ)` for drawn
+            /// wavelengths and 0 for fixed ones. In nm.
+            #[inline]
+            #[must_use]
+            pub fn weights(&self) -> &[[T; 4]; K] {
+                &self.0.rows
+            }
+
+            /// `s` at the wavelengths (what `s.sample(&self)` gives).
+            #[inline(always)]
+            #[must_use]
+            pub fn sample(
+                &self,
+                s: &impl $crate::spectrum::Spectrum,
+            ) -> $crate::spectrum::SampledSpectrum<K, T> {
+                s.sample(self)
+            }
+
+            /// The XYZ of a spectrum with values `v` at these wavelengths:
+            /// `Σⱼ rowⱼ·vⱼ`, summed in `T` (one multiply-add per
+            /// wavelength, four lanes wide), returned in `f64` so that a
+            /// pixel's sum of many estimates keeps its precision. The
+            /// assignment's convention, spectrum·nm;
+            /// [`Xyz::normalized`](crate::Xyz::normalized) gives a
+            /// renderer's (a constant 1 has `Y = 1`).
+            #[inline(always)]
+            #[must_use]
+            pub fn to_xyz(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> $crate::Xyz {
+                $crate::sampling::wavelengths::xyz(self.0.sums(&v))
+            }
+
+            /// The Y alone, `Σⱼ w_Yⱼ·vⱼ`, in `T` (spectrum·nm, like
+            /// every Y here).
+            #[inline(always)]
+            #[must_use]
+            pub fn y(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> T {
+                self.0.sums(&v)[1]
+            }
+
+            /// The luminance in the units of `v`: [`y`](Self::y) over
+            /// `∫ȳ dλ` ([`Y_BAR_INTEGRAL`](crate::spectrum::observer::Y_BAR_INTEGRAL)),
+            /// all in `T`, so that a constant spectrum's luminance is the
+            /// constant (on average, for drawn wavelengths; see the module
+            /// documentation for what each kind's weights sum to).
+            #[inline(always)]
+            #[must_use]
+            pub fn luminance(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> T {
+                self.y(v) * T::from_f64(1.0 / $crate::spectrum::observer::Y_BAR_INTEGRAL)
+            }
+
+            /// The weights of [`y`](Self::y), `w_Yⱼ`: `v.dot(&w)` is `y(v)`
+            /// to rounding, for any `v`. A path keeps its wavelengths, so a
+            /// renderer takes these once per path.
+            #[inline]
+            #[must_use]
+            pub fn y_weights(&self) -> $crate::spectrum::SampledSpectrum<K, T> {
+                $crate::spectrum::SampledSpectrum::new(self.0.rows.map(|row| row[1]))
+            }
+
+            /// A light's emission folded into the XYZ weights: the colour
+            /// any throughput `β` (at these wavelengths) carries from
+            /// `light` is then `emission.xyz(β)`, the light evaluated once.
+            ///
+            /// ```
+            /// use speclab::{data::{lights, patches}, HeroSample};
+            /// let h = HeroSample::<4>::exact(0.3);
+            /// let beta = patches::G4.sample(&h);
+            /// let folded = h.emission(&lights::F11).xyz(beta);
+            /// let direct = h.to_xyz(beta * lights::F11.sample(&h));
+            /// assert!((folded.y - direct.y).abs() <= 1e-12 * direct.y);
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn emission(
+                &self,
+                light: &impl $crate::spectrum::Spectrum,
+            ) -> $crate::sampling::Emission<K, T> {
+                let le = light.sample(self).values;
+                let rows = std::array::from_fn(|j| self.0.rows[j].map(|w| w * le[j]));
+                $crate::sampling::Emission { rows }
+            }
+
+            /// The same wavelengths and weights in precision `U` (a rule
+            /// fitted in `f64`, for a renderer in `f32`).
+            #[must_use]
+            pub fn cast<U: $crate::spectrum::Float>(&self) -> $name<K, U> {
+                $name(self.0.cast())
+            }
+        }
+
+        impl<const K: usize, T: $crate::spectrum::Float> $crate::spectrum::Wavelengths<K, T> for $name<K, T> {
+            #[inline(always)]
+            fn lambda(&self) -> &[T; K] {
+                &self.0.lambda
+            }
+
+            /// Found once, when the wavelengths were set.
+            #[inline(always)]
+            fn nearest_nm(&self) -> [u16; K] {
+                self.0.nearest
+            }
+        }
+    };
+}
+pub(crate) use weighted_wavelengths;
+
+/// M fixed wavelengths (nm) with their XYZ weights and no density: bucket
+/// centres or a fitted rule, for a renderer's inner loop.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FixedWavelengths<const M: usize, T: Float = f64>(pub(crate) Weighted<M, T>);
+
+weighted_wavelengths!(FixedWavelengths);
 
 /// A light's emission times the XYZ weights of some wavelengths (see
-/// [`SampledWavelengths::emission`]): rows `w꜀ⱼ·L(λⱼ)`.
+/// `emission` on [`HeroSample`](super::HeroSample) and
+/// [`FixedWavelengths`]): rows `rowⱼ·L(λⱼ)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Emission<const K: usize, T: Float = f64> {
-    weights: [[T; K]; 3],
+    pub(crate) rows: [[T; 4]; K],
 }
 
 impl<const K: usize, T: Float> Emission<K, T> {
     /// The XYZ that throughput `beta` carries from the light:
-    /// `Σⱼ w꜀ⱼ·L(λⱼ)·βⱼ`, summed in `T`, returned in `f64`.
+    /// `Σⱼ rowⱼ·L(λⱼ)·βⱼ`, summed in `T`, returned in `f64`.
     #[inline(always)]
     #[must_use]
     pub fn xyz(&self, beta: SampledSpectrum<K, T>) -> Xyz {
-        let [x, y, z] = &self.weights;
-        Xyz::new(dot(x, &beta.values).to_f64(), dot(y, &beta.values).to_f64(), dot(z, &beta.values).to_f64())
+        xyz(weighted_sum(&self.rows, &beta.values))
     }
 }
 
-/// `Σᵢ wᵢ·vᵢ`: the estimator, written once for every count (the colour is
-/// three of these, the luminance one), in four interleaved partial sums so
-/// that the additions do not wait on each other. Missing values (fewer than
-/// weights) count as 0. For a count known at compile time (unrolled).
-#[inline(always)]
-pub(crate) fn dot<T: Float>(w: &[T], values: &[T]) -> T {
-    let mut acc = [T::ZERO; 4];
-    for (i, (&w, &v)) in w.iter().zip(values).enumerate() {
-        acc[i % 4] += w * v;
-    }
-    (acc[0] + acc[2]) + (acc[1] + acc[3])
-}
-
-/// [`dot`] for a count known only at run time (the study's rules and hero
-/// widths): the same partial sums in the same order, walked in chunks of
-/// four so that they stay in registers instead of an array indexed by
-/// `i % 4` on the stack (twice as fast on 8 to 16 values).
+/// `Σᵢ wᵢ·vᵢ` for a count known only at run time (the study's rules and
+/// hero widths), in four interleaved partial sums walked in chunks of
+/// four, so that they stay in registers. Missing values (fewer than
+/// weights) count as 0.
 #[inline(always)]
 pub(crate) fn dot_slices(w: &[f64], values: &[f64]) -> f64 {
     let n = w.len().min(values.len());
@@ -224,13 +292,13 @@ pub(crate) fn dot_slices(w: &[f64], values: &[f64]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::{dot, dot_slices};
+    use super::dot_slices;
 
-    /// The run-time form is the compile-time form to the bit, for every
-    /// count from 0 to 13 (whole chunks, remainders, and values shorter
-    /// than the weights, which count as 0).
+    /// The partial sums in their order, for every count from 0 to 13 (whole
+    /// chunks, remainders, and values shorter than the weights, which count
+    /// as 0).
     #[test]
-    fn both_forms_of_the_sum_agree_to_the_bit() {
+    fn the_run_time_sum_keeps_its_order() {
         let w: Vec<f64> = (0..13).map(|i| 1.0 / (f64::from(i) + 1.7)).collect();
         let v: Vec<f64> = (0..13).map(|i| (f64::from(i) * 0.618_034).fract() - 0.3).collect();
         for n in 0..=13 {
@@ -239,7 +307,6 @@ mod tests {
                 acc
             });
             let expected = (by_hand[0] + by_hand[2]) + (by_hand[1] + by_hand[3]);
-            assert_eq!(dot(&w[..n], &v[..n]).to_bits(), expected.to_bits(), "n = {n}");
             assert_eq!(dot_slices(&w[..n], &v[..n]).to_bits(), expected.to_bits(), "n = {n}");
             assert_eq!(dot_slices(&w, &v[..n]).to_bits(), expected.to_bits(), "missing values, n = {n}");
         }

@@ -114,6 +114,28 @@ impl Spectrum for DenseSpectrum {
         }
     }
 
+    /// One load per wavelength, at the known nearest whole nanometres.
+    #[inline(always)]
+    fn eval_many_nearest(&self, _lambda: &[f64], nearest: &[u16], values: &mut [f64]) {
+        for (v, &i) in values.iter_mut().zip(nearest) {
+            *v = entry(&self.values, i);
+        }
+    }
+
+    /// One load per wavelength, at the known nearest whole nanometres.
+    #[inline(always)]
+    fn eval_many_nearest_f32(&self, _lambda: &[f32], nearest: &[u16], values: &mut [f32]) {
+        for (v, &i) in values.iter_mut().zip(nearest) {
+            *v = entry(&self.values_f32, i);
+        }
+    }
+
+    /// Itself: its lookup reaches it behind any pointer.
+    #[inline(always)]
+    fn as_dense(&self) -> Option<&DenseSpectrum> {
+        Some(self)
+    }
+
     /// One load per wavelength ([`DenseSpectrum::sample`]).
     #[inline(always)]
     fn sample<const K: usize, U: Float>(&self, at: &impl Wavelengths<K, U>) -> SampledSpectrum<K, U> {
@@ -139,7 +161,7 @@ impl Spectrum for DenseSpectrum {
 }
 
 /// The CIE 1931 observer at every whole nanometre from 380 to 730 nm, in
-/// `f32` and `f64`: one row `[x̄, ȳ, z̄, 0]` per nanometre, computed at
+/// `f32` and `f64`: one row `[x̄, ȳ, z̄, 1]` per nanometre, computed at
 /// compile time, looked up at the nearest one in the wavelengths'
 /// precision. A zero-sized value.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -166,12 +188,14 @@ static ROWS_F64: [[f64; 4]; DENSE_ENTRIES] = observer_rows();
 /// The same, rounded to `f32`.
 static ROWS_F32: [[f32; 4]; DENSE_ENTRIES] = rounded(&ROWS_F64);
 
+/// `[x̄, ȳ, z̄, 1]` per whole nanometre, and `[0, 0, 0, 1]` outside (a
+/// wavelength outside weighs nothing but keeps its pdf).
 const fn observer_rows() -> [[f64; 4]; DENSE_ENTRIES] {
-    let mut out = [[0.0; 4]; DENSE_ENTRIES];
+    let mut out = [[0.0, 0.0, 0.0, 1.0]; DENSE_ENTRIES];
     let mut i = 0;
     while i < OUTSIDE as usize {
         let [x, y, z] = xyz_bar_const(LAMBDA_MIN + i as f64);
-        out[i] = [x, y, z, 0.0];
+        out[i] = [x, y, z, 1.0];
         i += 1;
     }
     out

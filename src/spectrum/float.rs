@@ -81,8 +81,31 @@ pub trait Float:
 /// What only the crate uses of a precision: the trait is sealed, and
 /// these are not part of the API.
 pub(crate) mod sealed {
+    /// Four lanes of a precision in SIMD registers (`wide`'s `f32x4` and
+    /// `f64x4`): what [`crate::spectrum::simd`] computes with.
+    pub trait Vector:
+        Copy
+        + std::ops::Add<Output = Self>
+        + std::ops::Sub<Output = Self>
+        + std::ops::Mul<Output = Self>
+        + std::ops::Div<Output = Self>
+    {
+        /// `self·m + a`, fused where the build has FMA.
+        #[must_use]
+        fn mul_add(self, m: Self, a: Self) -> Self;
+    }
+
     /// Implemented for `f32` and `f64` alone.
     pub trait Sealed: Sized {
+        /// Four lanes of this precision.
+        type V4: Vector;
+        /// Four values as a vector.
+        fn v4(a: [Self; 4]) -> Self::V4;
+        /// A vector's four values.
+        fn array(v: Self::V4) -> [Self; 4];
+        /// One value in all four lanes.
+        fn splat(v: Self) -> Self::V4;
+
         /// Wavelengths and the values to fill at them, in this precision (how
         /// a spectrum reaches its `f32` or `f64` evaluation).
         fn lanes<'a>(lambda: &'a [Self], values: &'a mut [Self]) -> Lanes<'a>;
@@ -147,7 +170,27 @@ impl Float for f32 {
     }
 }
 
+impl sealed::Vector for wide::f32x4 {
+    #[inline(always)]
+    fn mul_add(self, m: Self, a: Self) -> Self {
+        wide::f32x4::mul_add(self, m, a)
+    }
+}
+
 impl sealed::Sealed for f32 {
+    type V4 = wide::f32x4;
+    #[inline(always)]
+    fn v4(a: [f32; 4]) -> wide::f32x4 {
+        wide::f32x4::new(a)
+    }
+    #[inline(always)]
+    fn array(v: wide::f32x4) -> [f32; 4] {
+        v.to_array()
+    }
+    #[inline(always)]
+    fn splat(v: f32) -> wide::f32x4 {
+        wide::f32x4::splat(v)
+    }
     #[inline(always)]
     fn lanes<'a>(lambda: &'a [f32], values: &'a mut [f32]) -> sealed::Lanes<'a> {
         sealed::Lanes::F32 { lambda, values }
@@ -194,7 +237,27 @@ impl Float for f64 {
     }
 }
 
+impl sealed::Vector for wide::f64x4 {
+    #[inline(always)]
+    fn mul_add(self, m: Self, a: Self) -> Self {
+        wide::f64x4::mul_add(self, m, a)
+    }
+}
+
 impl sealed::Sealed for f64 {
+    type V4 = wide::f64x4;
+    #[inline(always)]
+    fn v4(a: [f64; 4]) -> wide::f64x4 {
+        wide::f64x4::new(a)
+    }
+    #[inline(always)]
+    fn array(v: wide::f64x4) -> [f64; 4] {
+        v.to_array()
+    }
+    #[inline(always)]
+    fn splat(v: f64) -> wide::f64x4 {
+        wide::f64x4::splat(v)
+    }
     #[inline(always)]
     fn lanes<'a>(lambda: &'a [f64], values: &'a mut [f64]) -> sealed::Lanes<'a> {
         sealed::Lanes::F64 { lambda, values }

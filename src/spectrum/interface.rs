@@ -78,6 +78,7 @@
 
 use std::borrow::Cow;
 
+use crate::spectrum::dense::DenseSpectrum;
 use crate::spectrum::float::Float;
 use crate::spectrum::float::sealed::Lanes;
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
@@ -132,20 +133,52 @@ pub trait Spectrum {
         }
     }
 
+    /// [`Spectrum::eval_many`] at wavelengths whose nearest whole
+    /// nanometres are known (`nearest`, as
+    /// [`Wavelengths::nearest_nm`] finds them: a hero sample finds them once,
+    /// when drawn). A dense table reads its entries there instead of
+    /// finding them; by default `nearest` is ignored. This is how the fast
+    /// lookup reaches a spectrum behind `&dyn Spectrum` or
+    /// `Box<dyn Spectrum>`.
+    fn eval_many_nearest(&self, lambda: &[f64], nearest: &[u16], values: &mut [f64]) {
+        let _ = nearest;
+        self.eval_many(lambda, values);
+    }
+
+    /// [`Spectrum::eval_many_nearest`] in `f32`.
+    fn eval_many_nearest_f32(&self, lambda: &[f32], nearest: &[u16], values: &mut [f32]) {
+        let _ = nearest;
+        self.eval_many_f32(lambda, values);
+    }
+
+    /// The spectrum as a dense table, if it is one: how a dense table's
+    /// lookup (one load per wavelength, its count known at compile time)
+    /// reaches it behind `&dyn Spectrum`, `Box<dyn Spectrum>` or a renderer's
+    /// own wrapper, through [`Spectrum::sample`]. `None` by default.
+    fn as_dense(&self) -> Option<&DenseSpectrum> {
+        None
+    }
+
     /// The values at K wavelengths (a hero sample's, a fixed rule's, or a
-    /// `[T; K]`), in the wavelengths' precision `T`. By default through
-    /// [`Spectrum::eval_many`] or [`Spectrum::eval_many_f32`]; a spectrum
-    /// with a faster way overrides it.
+    /// `[T; K]`), in the wavelengths' precision `T`. By default a dense
+    /// table's lookup where [`Spectrum::as_dense`] finds one, and otherwise
+    /// through [`Spectrum::eval_many_nearest`] or
+    /// [`Spectrum::eval_many_nearest_f32`] (so through a reference or a box
+    /// too); a spectrum with a faster way overrides it.
     #[inline]
     #[must_use]
     fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T>
     where
         Self: Sized,
     {
+        if let Some(dense) = self.as_dense() {
+            return dense.sample(at);
+        }
         let mut values = [T::ZERO; K];
+        let nearest = at.nearest_nm();
         match T::lanes(at.lambda(), &mut values) {
-            Lanes::F32 { lambda, values } => self.eval_many_f32(lambda, values),
-            Lanes::F64 { lambda, values } => self.eval_many(lambda, values),
+            Lanes::F32 { lambda, values } => self.eval_many_nearest_f32(lambda, &nearest, values),
+            Lanes::F64 { lambda, values } => self.eval_many_nearest(lambda, &nearest, values),
         }
         SampledSpectrum::new(values)
     }
@@ -185,7 +218,7 @@ pub trait Spectrum {
     }
 }
 
-/// A reference or a box to a spectrum is the spectrum.
+/// A reference, a box or a shared pointer to a spectrum is the spectrum.
 macro_rules! forward_spectrum {
     ($($pointer:ty),*) => {$(
         impl<S: Spectrum + ?Sized> Spectrum for $pointer {
@@ -200,6 +233,18 @@ macro_rules! forward_spectrum {
             #[inline]
             fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
                 (**self).eval_many_f32(lambda, values);
+            }
+            #[inline]
+            fn eval_many_nearest(&self, lambda: &[f64], nearest: &[u16], values: &mut [f64]) {
+                (**self).eval_many_nearest(lambda, nearest, values);
+            }
+            #[inline]
+            fn eval_many_nearest_f32(&self, lambda: &[f32], nearest: &[u16], values: &mut [f32]) {
+                (**self).eval_many_nearest_f32(lambda, nearest, values);
+            }
+            #[inline]
+            fn as_dense(&self) -> Option<&DenseSpectrum> {
+                (**self).as_dense()
             }
             fn pieces(&self) -> Option<Pieces<'_>> {
                 (**self).pieces()
@@ -217,4 +262,4 @@ macro_rules! forward_spectrum {
     )*};
 }
 
-forward_spectrum!(&S, Box<S>);
+forward_spectrum!(&S, Box<S>, std::sync::Arc<S>, std::rc::Rc<S>);

@@ -43,7 +43,7 @@
 mod analytic;
 pub mod data;
 mod dense;
-mod float;
+pub(crate) mod float;
 pub(crate) mod integrate;
 mod interface;
 pub(crate) mod lookup;
@@ -57,6 +57,7 @@ pub(crate) mod quadrature;
 mod sampled;
 pub(crate) mod scaled;
 mod sigmoid;
+pub(crate) mod simd;
 mod tabulated;
 pub(crate) mod weights;
 

@@ -76,8 +76,10 @@ const fn rows() -> [[f64; 12]; SEGMENTS] {
 /// (`DenseObserver`). A hero sample takes its weights from one when it is
 /// drawn.
 pub trait Observer {
-    /// `[x̄, ȳ, z̄, 0]` at each wavelength of `at`, in its precision (the
-    /// fourth column pads the row to four lanes).
+    /// `[x̄, ȳ, z̄, 1]` at each wavelength of `at`, in its precision (the
+    /// fourth column, 1 at every wavelength, becomes the pdf's weight
+    /// `1/(K·pdf)` when a sample scales the row by it: one four-lane
+    /// multiplication per wavelength).
     fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K];
 }
 
@@ -93,7 +95,7 @@ impl Observer for Cie1931 {
         let lambda = at.lambda();
         std::array::from_fn(|j| {
             let [x, y, z] = xyz_bar(lambda[j].to_f64());
-            [T::from_f64(x), T::from_f64(y), T::from_f64(z), T::ZERO]
+            [T::from_f64(x), T::from_f64(y), T::from_f64(z), T::ONE]
         })
     }
 }

@@ -14,6 +14,7 @@
 //!   `is_black`, `safe_div` (0 where the divisor is 0), `map`, `clamp`,
 //!   `exp`, `sqrt`, `lerp`.
 //!
+//! `+ − × ÷` run four values per instruction (see [`super::simd`]).
 //! Plain `/` follows IEEE (x/0 is ±∞ or NaN); `safe_div` is pbrt's
 //! `SafeDiv`. Nothing here allocates.
 
@@ -164,14 +165,15 @@ macro_rules! pointwise_spectrum {
             type Output = Self;
             #[inline]
             fn $method(self, o: Self) -> Self {
-                $from(std::array::from_fn(|j| self.values[j] $sym o.values[j]))
+                $from($crate::spectrum::simd::zip(&self.values, &o.values, |a, b| a $sym b))
             }
         }
         impl<$($g)*, T: $crate::spectrum::Float> std::ops::$op<T> for $name<$($a,)* T> {
             type Output = Self;
             #[inline]
             fn $method(self, s: T) -> Self {
-                self.map(|v| v $sym s)
+                let s = <T as $crate::spectrum::float::sealed::Sealed>::splat(s);
+                $from($crate::spectrum::simd::map(&self.values, |a| a $sym s))
             }
         }
         impl<$($g)*, T: $crate::spectrum::Float> std::ops::$assign for $name<$($a,)* T> {
@@ -186,15 +188,16 @@ macro_rules! pointwise_spectrum {
                 *self = *self $sym s;
             }
         }
-        $crate::spectrum::pointwise::pointwise_spectrum!(@left [$($g)*] $name [$($a),*]; $op $method $sym; f32);
-        $crate::spectrum::pointwise::pointwise_spectrum!(@left [$($g)*] $name [$($a),*]; $op $method $sym; f64);
+        $crate::spectrum::pointwise::pointwise_spectrum!(@left [$($g)*] $name [$($a),*], $from; $op $method $sym; f32);
+        $crate::spectrum::pointwise::pointwise_spectrum!(@left [$($g)*] $name [$($a),*], $from; $op $method $sym; f64);
     };
-    (@left [$($g:tt)*] $name:ident [$($a:tt),*]; $op:ident $method:ident $sym:tt; $t:ty) => {
+    (@left [$($g:tt)*] $name:ident [$($a:tt),*], $from:path; $op:ident $method:ident $sym:tt; $t:ty) => {
         impl<$($g)*> std::ops::$op<$name<$($a,)* $t>> for $t {
             type Output = $name<$($a,)* $t>;
             #[inline]
             fn $method(self, o: $name<$($a,)* $t>) -> $name<$($a,)* $t> {
-                o.map(|v| self $sym v)
+                let s = <$t as $crate::spectrum::float::sealed::Sealed>::splat(self);
+                $from($crate::spectrum::simd::map(&o.values, |a| s $sym a))
             }
         }
     };

@@ -68,6 +68,17 @@ impl<S: Spectrum> Spectrum for Scaled<S> {
         values.iter_mut().for_each(|v| *v *= factor);
     }
 
+    fn eval_many_nearest(&self, lambda: &[f64], nearest: &[u16], values: &mut [f64]) {
+        self.spectrum.eval_many_nearest(lambda, nearest, values);
+        values.iter_mut().for_each(|v| *v *= self.factor);
+    }
+
+    fn eval_many_nearest_f32(&self, lambda: &[f32], nearest: &[u16], values: &mut [f32]) {
+        self.spectrum.eval_many_nearest_f32(lambda, nearest, values);
+        let factor = f32::from_f64(self.factor);
+        values.iter_mut().for_each(|v| *v *= factor);
+    }
+
     /// The spectrum's own `sample` (a dense table's one load), scaled.
     #[inline]
     fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {

@@ -9,6 +9,7 @@ mod carry;
 mod fuzz_body;
 mod fuzz_regressions;
 mod input_errors;
+mod materials;
 mod names;
 mod renderer_api;
 mod types;

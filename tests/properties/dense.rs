@@ -86,7 +86,8 @@ fn zero_outside_the_range() {
     let breaks = d.pieces().expect("steps").breaks;
     assert_eq!((breaks.len(), breaks[0], breaks[1], breaks[351]), (352, 380.0, 380.5, 730.0));
     let at = [f64::NAN, 379.0, 731.0];
-    assert_eq!(DenseObserver::new().xyz_bar_at(&at), [[0.0; 4]; 3]);
+    // No weight outside, and the pdf's column kept.
+    assert_eq!(DenseObserver::new().xyz_bar_at(&at), [[0.0, 0.0, 0.0, 1.0]; 3]);
 }
 
 /// The dense observer is the dense tables of x̄, ȳ, z̄ in one row, in
@@ -98,7 +99,7 @@ fn the_dense_observer_is_dense_tables() {
     for i in 0..=3500 {
         let l = 380.0 + f64::from(i) * 0.1;
         let [row] = d64.xyz_bar_at(&[l]);
-        assert_eq!(row, [tables[0].eval(l), tables[1].eval(l), tables[2].eval(l), 0.0], "{l}");
+        assert_eq!(row, [tables[0].eval(l), tables[1].eval(l), tables[2].eval(l), 1.0], "{l}");
         let [row32] = d32.xyz_bar_at(&[l as f32]);
         for c in 0..3 {
             assert!((f64::from(row32[c]) - row[c]).abs() <= 1e-7 * row[c].max(1e-3), "{l}");

@@ -137,7 +137,8 @@ fn every_form_of_the_rule_gives_the_same_numbers() {
     // Padded: the extra lanes repeat the last wavelength and weigh nothing.
     let padded = rule.wavelengths::<12, f64>().unwrap();
     assert_eq!(padded.lambda()[8..], [at.lambda()[7]; 4]);
-    assert!(padded.weights().iter().all(|row| row[8..].iter().all(|&w| w == 0.0)));
+    assert!(padded.weights()[8..].iter().all(|row| row == &[0.0; 4]));
+    assert!(padded.weights()[..8].iter().all(|row| row[..3] != [0.0; 3] && row[3] == 0.0));
     let colour = padded.to_xyz(l.sample(&padded) * s.sample(&padded));
     assert!(close(colour, direct, 1e-14), "{colour:?} vs {direct:?}");
     // In f32, the same rule to f32 rounding.

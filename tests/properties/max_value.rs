@@ -22,9 +22,10 @@ const H: f64 = 0.01;
 /// `f''·(H/2)²/2 = |Δ²f|/8` above them.
 fn grid_max(s: &dyn Spectrum) -> (f64, f64) {
     let grid: Vec<f64> = (0..=35_000).map(|i| s.eval(380.0 + f64::from(i) * H)).collect();
-    let (i, top) = grid.iter().enumerate().fold((0, f64::NEG_INFINITY), |best, (i, &v)| {
-        if v > best.1 { (i, v) } else { best }
-    });
+    let (i, top) = grid
+        .iter()
+        .enumerate()
+        .fold((0, f64::NEG_INFINITY), |best, (i, &v)| if v > best.1 { (i, v) } else { best });
     let miss = match (i.checked_sub(1).map(|j| grid[j]), grid.get(i + 1)) {
         (Some(before), Some(after)) => (before - 2.0 * top + after).abs() / 8.0,
         _ => 0.0,

@@ -2,8 +2,10 @@
 //! compile-time type `RegularSpectrum<M, B>` against sums written out here
 //! from the definitions, and the run-time `Rule::buckets` (its weights
 //! computed when made, its values on slices) against the compile-time
-//! type, bit for bit. Bucket values carry a path's throughput with the same
-//! arithmetic as sampled spectra.
+//! type, to rounding (the compile-time sum runs four lanes wide, fused
+//! where the build has FMA; the run-time one keeps the study's order).
+//! Bucket values carry a path's throughput with the same arithmetic as
+//! sampled spectra.
 
 use speclab::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
 use speclab::data::{Light, Patch, lights, patches};
@@ -12,9 +14,9 @@ use speclab::sampling::rule::{MAX_M, Rule, RuleKind};
 use speclab::spectrum::observer;
 use speclab::{BoxAverage, Center, RegularSpectrum, Xyz};
 
-/// Sums are rearranged (the library multiplies per bucket, then scales):
-/// allow f64 rounding only.
-const ROUNDING: f64 = 1e-12;
+/// Sums are rearranged (in another order, four lanes wide, with the width
+/// folded into the weights): allow f64 rounding only.
+const ROUNDING: f64 = 1e-14;
 
 fn close(a: Xyz, b: Xyz) -> bool {
     let scale = b.x.abs() + b.y.abs() + b.z.abs();
@@ -45,8 +47,8 @@ fn check<const M: usize>() {
                 (RegularSpectrum::<M, BoxAverage>::box_average(l) * RegularSpectrum::box_average(s)).to_xyz();
             assert!(close(c, center_sum), "M = {M} {light} {patch}: {c:?} vs {center_sum:?}");
             assert!(close(b, box_sum), "M = {M} {light} {patch}: {b:?} vs {box_sum:?}");
-            assert_eq!(center.xyz(l, s), c, "M = {M} {light} {patch}: run-time center");
-            assert_eq!(boxed.xyz(l, s), b, "M = {M} {light} {patch}: run-time box");
+            assert!(close(center.xyz(l, s), c), "M = {M} {light} {patch}: run-time center");
+            assert!(close(boxed.xyz(l, s), b), "M = {M} {light} {patch}: run-time box");
         }
     }
 }

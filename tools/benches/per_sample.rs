@@ -16,7 +16,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use speclab::sampling::reference;
-use speclab::spectrum::{DenseObserver, DenseSpectrum};
+use speclab::spectrum::DenseSpectrum;
 use speclab::{BoxAverage, Center, HeroSample, RegularSpectrum, SampledSpectrum, data};
 
 /// A fixed low-discrepancy sequence of u, so every run draws the same.
@@ -35,20 +35,20 @@ fn per_sample(c: &mut Criterion) {
     let mut next_u = sequence();
     group.bench_function("random K=1, one sample", |b| {
         b.iter(|| {
-            let h = HeroSample::<1>::new(black_box(next_u()));
+            let h = HeroSample::<1>::exact(black_box(next_u()));
             h.to_xyz(light.sample(&h) * surface.sample(&h))
         })
     });
     group.bench_function("hero K=4, one sample", |b| {
         b.iter(|| {
-            let h = HeroSample::<4>::new(black_box(next_u()));
+            let h = HeroSample::<4>::exact(black_box(next_u()));
             h.to_xyz(light.sample(&h) * surface.sample(&h))
         })
     });
-    let (dl, ds, dobs) = (DenseSpectrum::new(light), DenseSpectrum::new(surface), DenseObserver::new());
+    let (dl, ds) = (DenseSpectrum::new(light), DenseSpectrum::new(surface));
     group.bench_function("hero K=4 f32 over dense tables, one sample", |b| {
         b.iter(|| {
-            let h = HeroSample::<4, f32>::with_observer(black_box(next_u()) as f32, &dobs);
+            let h = HeroSample::<4, f32>::new(black_box(next_u()) as f32);
             h.to_xyz(dl.sample(&h) * ds.sample(&h))
         })
     });
@@ -102,8 +102,11 @@ fn drawing(c: &mut Criterion) {
         (BinnedPdf::new(&light, 256).expect("bins"), BinnedPdf::new(&Visible, 256).expect("bins"));
     let mut group = c.benchmark_group("drawing a hero sample, K=4");
     let mut next_u = sequence();
-    group.bench_function("HeroSample::new (uniform)", |b| {
+    group.bench_function("HeroSample::new (uniform, dense observer)", |b| {
         b.iter(|| HeroSample::<4>::new(black_box(next_u())))
+    });
+    group.bench_function("HeroSample::exact (uniform, exact observer)", |b| {
+        b.iter(|| HeroSample::<4>::exact(black_box(next_u())))
     });
     group.bench_function("from_pdf Uniform", |b| {
         b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Uniform))

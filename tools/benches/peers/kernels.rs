@@ -1,8 +1,11 @@
 //! Three ways to estimate the XYZ of light × surface from n hero samples of
 //! four wavelengths, written the way each kind of program would:
 //!
-//! - **speclab**: `HeroSample::<4>::new(u)`, `sample`, `*`, `to_xyz`: exact
-//!   interpolants (linear light, cubic reflectance and matching functions).
+//! - **speclab**: `HeroSample::<4>::exact(u)`, `sample`, `*`, `to_xyz`:
+//!   exact interpolants (linear light, cubic reflectance and matching
+//!   functions); and over dense tables as the README's first f32 loop
+//!   writes it (`HeroSample::<4, f32>::new(u)`, the dense observer), with
+//!   the tables held directly or as `Box<dyn Spectrum>`.
 //! - **pbrt-style**: what pbrt-v4 does: PCG32, `SampleUniform`-style hero
 //!   rotation in f32, five rounded lookups per wavelength into 1 nm f32
 //!   tables (light, surface, x̄, ȳ, z̄), division by the pdf.
@@ -15,9 +18,9 @@
 //! discretisation) for speed. Every kernel draws its own random numbers; the
 //! speclab kernel uses the same xorshift32 as the hand-tuned one.
 
+use speclab::spectrum::Float;
 use speclab::spectrum::observer::xyz_bar;
-use speclab::spectrum::{DenseObserver, DenseSpectrum, Float};
-use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, TabulatedSpectrum, Xyz};
+use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum, TabulatedSpectrum, Xyz};
 
 /// Table entries: one per nm from 380 to 730 inclusive.
 pub const ENTRIES: usize = 351;
@@ -101,7 +104,7 @@ pub fn speclab_hero<const K: usize, T: Float>(
 ) -> Xyz {
     let mut sum = Xyz::ZERO;
     for _ in 0..n {
-        let h = HeroSample::<K, T>::new(T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0)));
+        let h = HeroSample::<K, T>::exact(T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0)));
         sum += h.to_xyz(light.sample(&h) * surface.sample(&h));
     }
     sum / n as f64
@@ -109,19 +112,20 @@ pub fn speclab_hero<const K: usize, T: Float>(
 
 /// speclab's per-sample path over dense tables (light, surface and
 /// observer at every whole nm, looked up at the nearest), K = 4 in
-/// precision `T`: the mean XYZ of `n` hero samples.
+/// precision `T`, as the README's first f32 loop writes it: the mean XYZ
+/// of `n` hero samples. `S` is how the renderer holds its materials (the
+/// table itself, or `Box<dyn Spectrum>`).
 #[inline(never)]
-pub fn speclab_dense_hero<T: Float>(
-    light: &DenseSpectrum,
-    surface: &DenseSpectrum,
+pub fn speclab_dense_hero<T: Float, S: Spectrum>(
+    light: &S,
+    surface: &S,
     n: usize,
     rng: &mut XorShift32,
 ) -> Xyz {
-    let observer = DenseObserver::new();
     let mut sum = Xyz::ZERO;
     for _ in 0..n {
         let u = T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
-        let h = HeroSample::<4, T>::with_observer(u, &observer);
+        let h = HeroSample::<4, T>::new(u);
         sum += h.to_xyz(light.sample(&h) * surface.sample(&h));
     }
     sum / n as f64
