@@ -89,7 +89,10 @@ pub trait Observer {
 pub struct Cie1931;
 
 impl Observer for Cie1931 {
-    /// Evaluated in `f64` at each wavelength and rounded to `T`.
+    /// Evaluated in `f64` at each wavelength (one segment lookup for all
+    /// three, scalar Horner: on baseline x86-64 the three side by side in
+    /// one `f64x4` measured slower, 22 ns against 13 per wavelength) and
+    /// rounded to `T`.
     #[inline(always)]
     fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
         let lambda = at.lambda();

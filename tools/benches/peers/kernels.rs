@@ -18,8 +18,10 @@
 //! discretisation) for speed. Every kernel draws its own random numbers; the
 //! speclab kernel uses the same xorshift32 as the hand-tuned one.
 
-use speclab::spectrum::Float;
+use speclab::SampledSpectrum;
+use speclab::color::RgbAlbedo;
 use speclab::spectrum::observer::xyz_bar;
+use speclab::spectrum::{DenseSpectrum, Float, Wavelengths};
 use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum, TabulatedSpectrum, Xyz};
 
 /// Table entries: one per nm from 380 to 730 inclusive.
@@ -195,4 +197,31 @@ pub fn hand_tuned_hero(t: &Tables, n: usize, rng: &mut XorShift32) -> [f32; 3] {
     let scale = (LAMBDA_WIDTH as f32) / (4 * n) as f32;
     let s = |ch: usize| (acc[0][ch] + acc[1][ch] + acc[2][ch] + acc[3][ch]) * scale;
     [s(0), s(1), s(2)]
+}
+
+/// A renderer's own list of materials of mixed kinds, as the docs
+/// recommend for the hot loop: an enum whose `sample` dispatches to each
+/// kind's own.
+pub enum Material {
+    /// A measured reflectance as a dense table.
+    Table(DenseSpectrum),
+    /// A texture's colour.
+    Rgb(RgbAlbedo),
+}
+
+impl Spectrum for Material {
+    fn eval(&self, lambda: f64) -> f64 {
+        match self {
+            Material::Table(s) => s.eval(lambda),
+            Material::Rgb(s) => s.eval(lambda),
+        }
+    }
+
+    #[inline(always)]
+    fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {
+        match self {
+            Material::Table(s) => s.sample(at),
+            Material::Rgb(s) => s.sample(at),
+        }
+    }
 }
