@@ -23,6 +23,8 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+use wide::f64x4;
+
 use crate::color::Xyz;
 use crate::error::{Error, Field, Invalid, SampleError};
 use crate::spectrum::weights::{self, Weights};
@@ -121,7 +123,7 @@ impl<L: Spectrum> PreparedLight<L> {
         // middle segments' largest, and each end segment's own.
         let scale = self.weights.step().filter(|_| cubic && n >= 5).map(|h| 1.0 / (2.0 * h * h));
         let middle = scale.map(|s| s * self.weights.middle_margin());
-        let w = self.weights.samples();
+        let w = self.weights.columns();
         for (i, (y, o)) in r.chunks_exact(n).zip(out.iter_mut()).enumerate() {
             let mut sum = dot(w, y);
             let clear = match (scale, middle) {
@@ -203,8 +205,8 @@ impl<L: Spectrum> PreparedLight<L> {
     }
 }
 
-/// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|, in two
-/// independent lanes (packed arithmetic). With every middle segment's
+/// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|, four
+/// samples per vector (`wide`'s `f64x4`). With every middle segment's
 /// margin C, `lo − C·second ≥ 0` and `hi + C·second ≤ 1` clear them all: a
 /// segment's inner Bernstein coefficients lie within C·second of its
 /// linear interpolation, itself within [lo, hi]. (NaN slips through here;
@@ -212,29 +214,31 @@ impl<L: Spectrum> PreparedLight<L> {
 #[inline(always)]
 fn spread(y: &[f64]) -> (f64, f64, f64) {
     let n = y.len();
-    let (mut lo, mut hi, mut second) = ([y[0]; 2], [y[0]; 2], [0.0f64; 2]);
-    let pairs = n.saturating_sub(2) / 2;
-    let head = &y[..2 * pairs + 2];
-    for p in 0..pairs {
-        for l in 0..2 {
-            let i = 2 * p + l;
-            let (a, b, c) = (head[i], head[i + 1], head[i + 2]);
-            lo[l] = if a < lo[l] { a } else { lo[l] };
-            hi[l] = if a > hi[l] { a } else { hi[l] };
-            let d = (a - 2.0 * b + c).abs();
-            second[l] = if d > second[l] { d } else { second[l] };
-        }
+    let (mut lo, mut hi, mut second) = (f64x4::splat(y[0]), f64x4::splat(y[0]), f64x4::ZERO);
+    // Second differences start at 0, 4, 8, … while a whole vector of them
+    // fits (i + 6 ≤ n); the rest one at a time.
+    let mut i = 0;
+    while i + 6 <= n {
+        // Four samples from i + o (there are: i + 6 ≤ n).
+        let at = |o: usize| f64x4::new(*y[i + o..].first_chunk::<4>().unwrap_or(&[0.0; 4]));
+        let (a, b, c) = (at(0), at(1), at(2));
+        lo = lo.fast_min(a);
+        hi = hi.fast_max(a);
+        second = second.fast_max((a - b - b + c).abs());
+        i += 4;
     }
-    for j in 2 * pairs..n {
-        lo[0] = if y[j] < lo[0] { y[j] } else { lo[0] };
-        hi[0] = if y[j] > hi[0] { y[j] } else { hi[0] };
+    let [lo, hi, second] = [lo, hi, second].map(f64x4::to_array);
+    let (mut lo, mut hi) = (lo.into_iter().fold(y[0], f64::min), hi.into_iter().fold(y[0], f64::max));
+    let mut second = second.into_iter().fold(0.0, f64::max);
+    for j in i..n {
+        lo = if y[j] < lo { y[j] } else { lo };
+        hi = if y[j] > hi { y[j] } else { hi };
         if j + 2 < n {
             let d = (y[j] - 2.0 * y[j + 1] + y[j + 2]).abs();
-            second[0] = if d > second[0] { d } else { second[0] };
+            second = if d > second { d } else { second };
         }
     }
-    let pick = |a: [f64; 2], smaller: bool| if (a[0] < a[1]) == smaller { a[0] } else { a[1] };
-    (pick(lo, true), pick(hi, false), pick(second, false))
+    (lo, hi, second)
 }
 
 /// An end segment `k` (stencil from `s`) is clear: its samples' range,
@@ -262,25 +266,25 @@ fn invalid_sample(r: &[f64], from: usize, n: usize) -> Option<Error> {
     Some(SampleError { index, field: Field::Value, problem }.into())
 }
 
-/// `Σᵢ wᵢ·yᵢ` per channel, in two interleaved partial sums kept in
-/// registers (index loops over slices of one length, so bounds checks hoist
-/// out of the loop).
+/// `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns, four samples per
+/// vector (`wide`'s `f64x4`), the rest one at a time.
 #[inline(always)]
-fn dot(w: &[[f64; 3]], y: &[f64]) -> [f64; 3] {
-    let n = w.len().min(y.len());
-    let (w, y) = (&w[..n], &y[..n]);
-    let (mut even, mut odd) = ([0.0; 3], [0.0; 3]);
-    for i in 0..n / 2 {
-        let (a, b) = (2 * i, 2 * i + 1);
-        for ch in 0..3 {
-            even[ch] += w[a][ch] * y[a];
-            odd[ch] += w[b][ch] * y[b];
-        }
+fn dot(columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
+    let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
+    let (y4, y_rest) = y[..n].as_chunks::<4>();
+    let [(x4, x_rest), (g4, g_rest), (z4, z_rest)] = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
+    let mut acc = [f64x4::ZERO; 3];
+    for (((y, x), g), z) in y4.iter().zip(x4).zip(g4).zip(z4) {
+        let y = f64x4::new(*y);
+        acc[0] = f64x4::new(*x).mul_add(y, acc[0]);
+        acc[1] = f64x4::new(*g).mul_add(y, acc[1]);
+        acc[2] = f64x4::new(*z).mul_add(y, acc[2]);
     }
-    if n % 2 == 1 {
-        for ch in 0..3 {
-            even[ch] += w[n - 1][ch] * y[n - 1];
-        }
+    let mut sum = acc.map(f64x4::reduce_add);
+    for (i, &y) in y_rest.iter().enumerate() {
+        sum[0] += x_rest[i] * y;
+        sum[1] += g_rest[i] * y;
+        sum[2] += z_rest[i] * y;
     }
-    [even[0] + odd[0], even[1] + odd[1], even[2] + odd[2]]
+    sum
 }

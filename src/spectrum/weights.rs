@@ -47,8 +47,9 @@ pub(crate) struct Weights {
     pub(crate) cubic: bool,
     /// The integration range: 380–730 nm ∩ the light's and the grid's support.
     pub(crate) range: [f64; 2],
-    /// Per sample, per channel.
-    pub(crate) samples: Vec<[f64; 3]>,
+    /// One weight per sample, as three columns (x̄, ȳ, z̄), for sums four
+    /// samples at a time.
+    pub(crate) columns: [Vec<f64>; 3],
     /// Per segment, per stencil sample (4; linear uses 2), per channel.
     pub(crate) segments: Vec<[[f64; 3]; 4]>,
     /// Per segment: the stencil vectors giving the cubic's inner Bernstein
@@ -83,9 +84,9 @@ impl Weights {
         self.range
     }
 
-    /// One weight per sample and channel.
-    pub(crate) fn samples(&self) -> &[[f64; 3]] {
-        &self.samples
+    /// The weights as three columns, x̄, ȳ and z̄, one weight per sample.
+    pub(crate) fn columns(&self) -> &[Vec<f64>; 3] {
+        &self.columns
     }
 
     /// Segment `k`'s weights per stencil sample, and where its stencil starts.
@@ -173,7 +174,18 @@ impl Weights {
         let middle = margins.get(1..margins.len().saturating_sub(1)).unwrap_or(&[]);
         let middle_margin = middle.iter().fold(0.0, |a: f64, &b| a.max(b));
         let step = equidistant_step(grid);
-        Weights { grid: grid.to_vec(), cubic, range, samples, segments, hull, margins, step, middle_margin }
+        let columns = std::array::from_fn(|c| samples.iter().map(|w| w[c]).collect());
+        Weights {
+            grid: grid.to_vec(),
+            cubic,
+            range,
+            columns,
+            segments,
+            hull,
+            margins,
+            step,
+            middle_margin,
+        }
     }
 }
 

@@ -128,6 +128,11 @@ fn main() {
             unit: Unit::Throughput(None),
         },
         Row { what: "batch, 2 threads", target: "≥ 1.6× 1 thread", unit: Unit::Throughput(Some(18)) },
+        Row {
+            what: "reading the same reflectances alone (a sum), 1 thread",
+            target: "",
+            unit: Unit::Throughput(None),
+        },
     ];
     let pools = [1, 2].map(|n| ThreadPoolBuilder::new().num_threads(n).build().expect("a thread pool"));
     let mut runs = Vec::new();
@@ -176,6 +181,10 @@ fn main() {
             Case::new("reference", || calls(|| reference::xyz(black_box(light), black_box(surface)))),
             Case::new("batch 1", || batch(&prepared, &reflectances, &mut out, &pools[0])),
             Case::new("batch 2", || batch(&prepared, &reflectances, &mut out2, &pools[1])),
+            Case::new("read", || {
+                black_box(read(black_box(&reflectances)));
+                SPECTRA
+            }),
         ];
         let ns = measure(&mut cases, 15, 20.0);
         eprintln!(
@@ -222,6 +231,18 @@ fn batch(
     });
     black_box(&out);
     out.len()
+}
+
+/// The sum of `r` in eight independent lanes: reading it as fast as the
+/// memory gives it (the floor under the batch).
+fn read(r: &[f64]) -> f64 {
+    let mut acc = [0.0f64; 8];
+    for c in r.as_chunks::<8>().0 {
+        for l in 0..8 {
+            acc[l] += c[l];
+        }
+    }
+    acc.iter().sum()
 }
 
 /// `count` reflectances on the patches' grid: random convex mixtures of the
