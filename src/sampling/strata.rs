@@ -80,6 +80,27 @@ impl Strata {
         (v * scale).min(scale * (1.0 - f64::EPSILON))
     }
 
+    /// [`Strata::point`] for a renderer computing in `f32`: its number
+    /// and the primary number in `f32` (the index arithmetic in `f64`,
+    /// rounded once, and kept below the top of its range in `f32` too).
+    ///
+    /// ```
+    /// use speclab::{sampling::strata::Strata, HeroSample};
+    /// let u: f32 = Strata::Jittered.point_f32(3, 16, 4, 0.5_f32);
+    /// assert_eq!(u, 3.5 / 64.0); // exact in f32: kept as it is
+    /// let top = Strata::Jittered.point_f32(15, 16, 1, 1.0 - f32::EPSILON / 2.0);
+    /// assert!(top < 1.0);
+    /// let h = HeroSample::<4, f32>::new(u);
+    /// # let _ = h;
+    /// ```
+    #[must_use]
+    pub fn point_f32(self, i: usize, n: usize, k: usize, u: f32) -> f32 {
+        let v = self.point(i, n, k, f64::from(u));
+        let r = v as f32;
+        // Rounded to the nearest, v may have gone up to the top: step down.
+        if f64::from(r) > v { r.next_down() } else { r }
+    }
+
     /// The `n` primary numbers of one estimate made of samples of `k`
     /// wavelengths, their uniform numbers drawn from `rng` as they are
     /// needed ([`Strata::point`] of each).

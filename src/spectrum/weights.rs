@@ -175,17 +175,7 @@ impl Weights {
         let middle_margin = middle.iter().fold(0.0, |a: f64, &b| a.max(b));
         let step = equidistant_step(grid);
         let columns = std::array::from_fn(|c| samples.iter().map(|w| w[c]).collect());
-        Weights {
-            grid: grid.to_vec(),
-            cubic,
-            range,
-            columns,
-            segments,
-            hull,
-            margins,
-            step,
-            middle_margin,
-        }
+        Weights { grid: grid.to_vec(), cubic, range, columns, segments, hull, margins, step, middle_margin }
     }
 }
 
