@@ -3,7 +3,7 @@
 //!
 //! [`Float`] is implemented for those two types only (it is sealed). Every
 //! per-sample type takes it as a parameter that defaults to `f64`:
-//! `SampledSpectrum<K, T>`, `SampledWavelengths<K, T>`,
+//! `SampledSpectrum<K, T>`, `HeroSample<K, T>`, `FixedWavelengths<M, T>`,
 //! `RegularSpectrum<M, B, T>`. One source serves both precisions; a
 //! renderer that names `f32` gets `f32` values, wavelengths and weights,
 //! and never converts. Dense tables (`DenseSpectrum`, `DenseObserver`)

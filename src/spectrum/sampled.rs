@@ -30,7 +30,7 @@ use crate::spectrum::lookup;
 use crate::spectrum::pointwise::pointwise_spectrum;
 
 /// K wavelengths, nm, at which spectra are sampled: a
-/// `SampledWavelengths<K, T>` (hero samples and fixed rules), or a plain
+/// `HeroSample<K, T>` or `FixedWavelengths<K, T>` (drawn or fixed), or a plain
 /// `[T; K]`.
 pub trait Wavelengths<const K: usize, T: Float = f64> {
     /// The wavelengths, nm.

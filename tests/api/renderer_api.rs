@@ -307,7 +307,7 @@ fn exact_paths_are_brute_force_quadrature() {
     assert!(scene.nodes() >= 70 * 9, "{} nodes", scene.nodes());
 }
 
-/// A light folded into the weights (`SampledWavelengths::emission`) gives
+/// A light folded into the weights (`FixedWavelengths::emission`) gives
 /// what multiplying by the light and converting gives, for hero samples
 /// and for a fitted rule's wavelengths, in f64 and f32.
 #[test]

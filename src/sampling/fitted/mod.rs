@@ -19,7 +19,7 @@
 //! to three lights; it is deterministic.
 //!
 //! The fit is a [`Rule`] (M chosen at run time); a renderer takes it as a
-//! `Copy` value, [`Rule::wavelengths`] (a `SampledWavelengths<M, T>`),
+//! `Copy` value, [`Rule::wavelengths`] (a `FixedWavelengths<M, T>`),
 //! evaluates its spectra there as a `SampledSpectrum<M, T>` and converts
 //! with the weights: no allocation per sample.
 //!
@@ -86,7 +86,7 @@ impl Rule {
     /// which light each contribution came from (next-event estimation
     /// does) carries one set of `m` values per path and converts each
     /// light's contribution with that light's weights
-    /// ([`SampledWavelengths::emission`](crate::sampling::SampledWavelengths::emission)):
+    /// ([`FixedWavelengths::emission`](crate::sampling::FixedWavelengths::emission)):
     /// more accurate than one rule serving every light whenever the lights
     /// differ (F11 and A in one scene: ΔE00 over the six patches at
     /// M = 10 at most 0.34 with each light's weights, 1.6 with one
