@@ -10,6 +10,7 @@ use speclab::{Xyz, data};
 const TOL: f64 = 0.5e-4;
 
 /// Pairs whose hues lie more than 180° apart, summing to 360° or more
+/// (one to exactly 360°)
 /// (where Sharma, Wu and Dalal's mean hue is `(h₁ + h₂ − 360°)/2`) and to
 /// less (`(h₁ + h₂ + 360°)/2`): ΔE00 as colour-science 0.4.7 computes it
 /// (`delta_E_CIE2000`, which follows their rule; a peer's output, not
@@ -25,6 +26,11 @@ fn mean_hue_across_zero_follows_sharma() {
         ([40.0, 10.0, -17.3], [45.0, -5.0, 28.0], 36.33824769318523),
         ([50.0, 30.0, 5.3], [50.0, -25.0, -9.0], 50.075722799686744),
         ([60.0, 5.0, 20.0], [55.0, -1.0, -30.0], 32.747342381229416),
+        // Mirror images, the chroma doubled (a power of two: the hue angles
+        // are each other's negatives to the bit), so the hues sum to exactly
+        // 360°: Sharma's `h₁ + h₂ < 360°` is false, and h̄′ = 0, not 360°
+        // (Δθ's Gaussian is not periodic: the two differ by 5e-6 relative).
+        ([50.0, 20.0, 5.0], [50.0, 40.0, -10.0], 12.305509828840497),
     ];
     for (p, q, want) in peer {
         for de in [ciede2000(p, q), ciede2000(q, p)] {
