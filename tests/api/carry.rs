@@ -17,7 +17,8 @@ fn close(a: Xyz, b: Xyz, tolerance: f64) -> bool {
 }
 
 /// Hero: the path's wavelengths are the pdf's hero sample, a vertex is the
-/// spectra sampled there, and the luminance is `y` over ∫ȳ.
+/// spectra sampled there, the luminance is `y` over ∫ȳ and the roulette's
+/// survival the largest value.
 #[test]
 fn hero_is_the_per_sample_calls() {
     let f11 = LightPdf::light(&lights::F11).expect("a bright light");
@@ -32,6 +33,9 @@ fn hero_is_the_per_sample_calls() {
         assert_eq!(hero.emitted(&path, 1, beta), path.to_xyz(beta * path.sample(&lights::A)));
         assert_ne!(hero.emitted(&path, 0, beta), hero.emitted(&path, 1, beta));
         assert_eq!(hero.luminance(&path, beta), path.y(beta) * (1.0 / Y_BAR_INTEGRAL));
+        // Russian roulette's survival: the largest value over the wavelengths.
+        assert_eq!(hero.max_component(&path, beta), beta.max_value());
+        assert!(beta.max_value() > 0.0 && beta.max_value() < 0.5);
     }
     // In f32, the same wavelengths to rounding.
     let single = Hero::new(vec![&lights::F11], vec![&patches::G4], DenseObserver, Uniform).precision::<f32>();
@@ -78,6 +82,8 @@ fn fitted_is_the_rules_weights() {
     let y = rules[0].wavelengths::<12, f64>().expect("12 lanes").y_weights();
     assert_eq!(twelve.luminance(&(), beta), beta.dot(&y) * (1.0 / Y_BAR_INTEGRAL));
     assert_ne!(twelve.luminance(&(), beta), twelve.luminance(&(), twelve.one()));
+    assert_eq!(twelve.max_component(&(), beta), beta.max_value());
+    assert!(beta.max_value() > 0.0 && beta.max_value() < 2.0);
 }
 
 /// Rgb: lights as their white's colour, surfaces as their albedo's, a
@@ -94,4 +100,6 @@ fn rgb_is_triples() {
     assert_eq!(rgb.emitted(&(), 1, beta), space.xyz(beta * rgb.lights[1]));
     assert!((rgb.luminance(&(), rgb.one()) - 1.0).abs() < 1e-12);
     assert_eq!(rgb.luminance(&(), beta), space.xyz(beta).y);
+    assert_eq!(rgb.max_component(&(), beta), beta.max_component());
+    assert!(beta.max_component() > 0.0 && beta.max_component() < 0.5);
 }

@@ -64,3 +64,23 @@ fn pdf_choices() {
     use speclab::sampling::choice::PdfKind;
     round_trip(&PdfKind::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
 }
+
+/// The surfaces' names are the patches' then the conductors', each found
+/// by `surface_named` (a patch as itself, a conductor tabulated); the
+/// deprecated `Light::all()` is `Light::ALL`.
+#[test]
+fn surface_names_and_the_old_light_list() {
+    use speclab::data::{SURFACE_NAMES, conductors, patches, surface_named};
+    let expected: Vec<&str> = patches::NAMES.iter().chain(&conductors::NAMES).copied().collect();
+    assert_eq!(SURFACE_NAMES.to_vec(), expected);
+    assert!(!conductors::NAMES.is_empty());
+    for name in SURFACE_NAMES {
+        let s = surface_named(name).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(s.values().iter().all(|v| (0.0..=1.0).contains(v)), "{name}");
+    }
+    let err = surface_named("nonsense").unwrap_err().to_string();
+    assert!(err.contains("a built-in surface"), "{err}");
+    #[allow(deprecated)]
+    let all: Vec<Light> = Light::all().collect();
+    assert_eq!(all, Light::ALL.to_vec());
+}
