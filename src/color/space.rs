@@ -48,7 +48,7 @@
 //!
 //! ```
 //! use speclab::color::{LinearRgb, space::RgbSpace};
-//! use speclab::spectrum::{Blackbody, DenseObserver, DenseSpectrum};
+//! use speclab::spectrum::{Blackbody, DenseSpectrum};
 //! use speclab::{HeroSample, SampledSpectrum, Spectrum, Xyz, sampling::reference};
 //! let acescg = RgbSpace::acescg();
 //! // A texel's reflectance; `acescg.albedo(rgb)` looks it up in the space's
@@ -58,7 +58,7 @@
 //! let (light, wall) = (DenseSpectrum::new(&lamp), DenseSpectrum::new(&texel));
 //! let mut pixel = Xyz::ZERO;
 //! for i in 0..256_u16 {
-//!     let path = HeroSample::<4, f32>::with_observer((f32::from(i) + 0.5) / 256.0, &DenseObserver);
+//!     let path = HeroSample::<4, f32>::new((f32::from(i) + 0.5) / 256.0); // the dense observer
 //!     let beta: SampledSpectrum<4, f32> = path.sample(&wall);
 //!     pixel += path.to_xyz(beta * path.sample(&light)).normalized(); // Y of a constant 1 is 1
 //! }

@@ -26,12 +26,12 @@
 //!
 //! ```
 //! use speclab::{data::{lights, patches}, HeroSample, sampling::reference};
-//! use speclab::spectrum::{DenseObserver, DenseSpectrum};
+//! use speclab::spectrum::DenseSpectrum;
 //! let (light, surface) = (DenseSpectrum::new(&lights::F11), DenseSpectrum::new(&patches::H4));
-//! let observer = DenseObserver::new();
 //! let mut pixel = speclab::Xyz::ZERO;
 //! for i in 0..256_u16 {
-//!     let h = HeroSample::<4, f32>::with_observer((f32::from(i) + 0.5) / 256.0, &observer);
+//!     // `new` weighs by the dense observer (`with_observer(u, &DenseObserver)`).
+//!     let h = HeroSample::<4, f32>::new((f32::from(i) + 0.5) / 256.0);
 //!     pixel += h.to_xyz(light.sample(&h) * surface.sample(&h));
 //! }
 //! let exact = reference::xyz(&lights::F11, &patches::H4);
