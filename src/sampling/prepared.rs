@@ -288,3 +288,32 @@ fn dot(columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
     }
     sum
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{dot, spread};
+
+    /// The four-lane forms give what a scalar walk gives, for every length
+    /// from 2 to 40 (whole vectors and tails) and samples that put the
+    /// extremes and the largest second difference anywhere.
+    #[test]
+    fn four_lanes_agree_with_one_at_a_time() {
+        for n in 2..=40 {
+            for shift in 0..5 {
+                let y: Vec<f64> = (0..n).map(|i| ((i * 7 + shift * 3) % 11) as f64 / 10.0).collect();
+                let lo = y.iter().copied().fold(f64::INFINITY, f64::min);
+                let hi = y.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                let second = y.windows(3).map(|w| (w[0] - 2.0 * w[1] + w[2]).abs()).fold(0.0, f64::max);
+                assert_eq!(spread(&y), (lo, hi, second), "n = {n}, shift {shift}");
+                let columns: [Vec<f64>; 3] =
+                    std::array::from_fn(|c| (0..n).map(|i| 1.0 + (i * (c + 2)) as f64).collect());
+                let by_hand: [f64; 3] =
+                    std::array::from_fn(|c| columns[c].iter().zip(&y).map(|(w, v)| w * v).sum());
+                let sums = dot(&columns, &y);
+                for c in 0..3 {
+                    assert!((sums[c] - by_hand[c]).abs() <= 1e-12 * by_hand[c].abs().max(1.0), "n = {n}");
+                }
+            }
+        }
+    }
+}

@@ -12,7 +12,7 @@ use rand::rngs::StdRng;
 use rand::{RngExt, SeedableRng};
 use speclab::data::{Light, Patch};
 use speclab::sampling::reference;
-use speclab::spectrum::{DenseObserver, DenseSpectrum};
+use speclab::spectrum::DenseSpectrum;
 use speclab::{Error, HeroSample, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, TabulatedSpectrum, Xyz, data};
 
 const TRIALS: usize = 2000;
