@@ -188,8 +188,19 @@ fn path_tracer_ops(c: &mut Criterion) {
             (v.average(), v.max_value(), v.is_black())
         })
     });
-    group.bench_function("y (luminance alone)", |b| b.iter(|| black_box(&h).y(black_box(le))));
-    group.bench_function("to_xyz", |b| b.iter(|| black_box(&h).to_xyz(black_box(le))));
+    // y and to_xyz over 64 samples in a loop, per sample: one call between
+    // black boxes measures the round trip through memory, not the sum.
+    let many: Vec<_> = (0..64).map(|i| HeroSample::<4>::new((f64::from(i) + 0.5) / 64.0)).collect();
+    let les: Vec<_> = many.iter().map(|h| data::lights::F11.sample(h)).collect();
+    group.throughput(criterion::Throughput::Elements(64));
+    group.bench_function("y (luminance alone), per sample of 64", |b| {
+        b.iter(|| black_box(&many).iter().zip(black_box(&les)).map(|(h, le)| h.y(*le)).sum::<f64>())
+    });
+    group.bench_function("to_xyz, per sample of 64", |b| {
+        b.iter(|| {
+            black_box(&many).iter().zip(black_box(&les)).map(|(h, le)| h.to_xyz(*le)).sum::<speclab::Xyz>()
+        })
+    });
     group.finish();
 }
 
