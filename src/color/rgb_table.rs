@@ -18,7 +18,7 @@
 //! coefficients are not fits; the round trip (albedo, then its colour
 //! under D65) is within ΔE00 0.04 of the colour asked for over a 9³ grid
 //! of albedos, and within 0.32 over 4,000 colours spread through the cube
-//! (mean 0.013; `tests/upsample.rs`).
+//! (mean 0.013; `tests/properties/upsample.rs`).
 //!
 //! ```
 //! use speclab::color::{LinearRgb, rgb_table::RgbTable, space::RgbSpace};

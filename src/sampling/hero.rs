@@ -77,9 +77,11 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
 
     /// The uniform hero sample for `u`, weighted by the dense observer
     /// ([`DenseObserver`]: the CIE 1931 observer at the nearest whole
-    /// nanometre, as pbrt-v4 looks it up; its estimates are unbiased for
-    /// the 1 nm sum, within 2e-6 of the exact integrals here, see
-    /// `spectrum::dense`): the fast path, and the one a renderer wants.
+    /// nanometre, as pbrt-v4 looks it up; zero outside 380–730 nm, where
+    /// [`Cie1931`] has x̄, ȳ, z̄ up to 780 nm; over dense spectra its
+    /// estimates are unbiased for the integral of the 1 nm steps, whose ∫ȳ
+    /// is 6e-8 from the exact one): the fast path, and the one a renderer
+    /// wants.
     /// [`HeroSample::exact`] weighs by the exact observer.
     ///
     /// `λⱼ = 380 + W·((u + j/K) mod 1)`, each of pdf `1/W`. The wavelengths
@@ -156,7 +158,10 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
 
     /// The sample of wavelengths `lambda` (nm) drawn with densities `pdf`
     /// (1/nm), from a renderer's own sampler and distribution, weighted by
-    /// the dense observer. Each wavelength must be finite and each pdf
+    /// the dense observer (zero outside 380–730 nm: a renderer drawing
+    /// from 360–830 nm gets nothing from the wavelengths outside; use
+    /// [`HeroSample::from_wavelengths_with`] and [`Cie1931`] for x̄, ȳ, z̄
+    /// up to 780 nm). Each wavelength must be finite and each pdf
     /// finite and non-negative with a finite reciprocal (else an
     /// [`Error::SampleWavelength`]); a pdf of 0 marks a wavelength that
     /// contributes nothing.

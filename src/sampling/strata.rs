@@ -82,7 +82,8 @@ impl Strata {
 
     /// [`Strata::point`] for a renderer computing in `f32`: its number
     /// and the primary number in `f32` (the index arithmetic in `f64`,
-    /// rounded once, and kept below the top of its range in `f32` too).
+    /// rounded to `f32` and stepped down one ulp where that rounding went
+    /// up, so that it stays below the top of its range in `f32` too).
     ///
     /// ```
     /// use speclab::{sampling::strata::Strata, HeroSample};

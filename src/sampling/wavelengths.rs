@@ -35,7 +35,7 @@
 //!   from it, for the dense one);
 //! - box buckets: exactly `Y_BAR_INTEGRAL`;
 //! - centre buckets: the M-point midpoint sum of ȳ (2.3 % low at M = 4,
-//!   within 1e-4 from M = 16);
+//!   4e-5 low at M = 16, 1e-4 high at M = 32);
 //! - a fitted rule: whatever its fit to the scene's lights made it (under
 //!   F11 at M = 10 about 77 nm): a rule reproduces light × reflectance
 //!   products, not a reflectance alone, so its luminance of a throughput
@@ -52,9 +52,17 @@
 //! assert!(xyz.y > xyz.x && (h.y(v) - h.y_weights().dot(&v)).abs() <= 1e-6 * h.y(v));
 //! ```
 //!
-//! A fixed rule has no density:
+//! A fixed rule has wavelengths and weights:
 //!
-//! ```compile_fail
+//! ```
+//! use speclab::{data::lights, sampling::rule::Rule};
+//! let at = Rule::fit(&[&lights::F11], 10).unwrap().wavelengths::<10, f32>().unwrap();
+//! assert_eq!(at.lambda().len(), 10);
+//! ```
+//!
+//! but no density (the same lines with `pdf` do not compile, E0599):
+//!
+//! ```compile_fail,E0599
 //! use speclab::{data::lights, sampling::rule::Rule};
 //! let at = Rule::fit(&[&lights::F11], 10).unwrap().wavelengths::<10, f32>().unwrap();
 //! let pdf = at.pdf(); // no such method: fixed wavelengths are not drawn
@@ -87,10 +95,16 @@ impl<const K: usize, T: Float> Weighted<K, T> {
 
     /// Drawn weights: `[x̄, ȳ, z̄, 1]·sⱼ` (so `w₀ = sⱼ`), with
     /// `sⱼ = 1/(K·pdfⱼ)` and `cmf` the observer's rows at the
-    /// wavelengths: one four-lane multiplication per wavelength.
+    /// wavelengths: one four-lane multiplication per wavelength. `w₀` is
+    /// set to `sⱼ` whatever the observer's fourth column holds, so an
+    /// observer written as `[x̄, ȳ, z̄, 0]` keeps its pdf.
     #[inline(always)]
     pub(crate) fn drawn(mut self, cmf: [[T; 4]; K], s: [T; K]) -> Self {
-        self.rows = std::array::from_fn(|j| T::array(T::v4(cmf[j]) * T::splat(s[j])));
+        self.rows = std::array::from_fn(|j| {
+            let mut row = T::array(T::v4(cmf[j]) * T::splat(s[j]));
+            row[3] = s[j];
+            row
+        });
         self
     }
 

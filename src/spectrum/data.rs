@@ -112,7 +112,7 @@ pub mod lights {
     /// D65's formula), M₁ and M₂ rounded to three decimals as the CIE
     /// computes them. Tabulated every 5 nm from 300 to 830 nm, linear
     /// between; 100 at 560 nm. It reproduces the CIE's D50, D55, D65 and
-    /// D75 tables to their rounding (`tests/named.rs`).
+    /// D75 tables to their rounding (`tests/truth/named.rs`).
     pub fn daylight(kelvin: f64) -> Result<TabulatedSpectrum, Error> {
         if !(4000.0..=25000.0).contains(&kelvin) {
             return Err(Error::Daylight { kelvin });

@@ -11,7 +11,7 @@
 //! z̄ as one 16-byte (`f32`) row. Outside 380–730 nm a dense table is
 //! zero.
 //!
-//! **Accuracy** (measured in `tests/dense.rs`). Point by point a dense
+//! **Accuracy** (measured in `tests/properties/dense.rs`). Point by point a dense
 //! table is a step: off its source by up to half a nanometre's change (the
 //! largest |dense − source| over 380–730 nm, every 0.01 nm: 0.014 for the
 //! patches' reflectances, 0.040 for the observer, 4.6 for F11 beside its

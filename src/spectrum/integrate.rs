@@ -9,7 +9,7 @@
 //! not (a blackbody, a sigmoid polynomial, a closure) gets a rule
 //! [`SMOOTH_EXTRA`] degrees beyond the polynomial part's: for the smooth
 //! spectra of this crate that agrees with a rule of twice the points to
-//! about 1e-12 relative (`tests/spectra.rs`). Results are `[X, Y, Z]`
+//! about 1e-12 relative (`tests/properties/spectra.rs`). Results are `[X, Y, Z]`
 //! arrays at this floor; `sampling::reference` makes them `Xyz`.
 
 use crate::spectrum::interface::Spectrum;

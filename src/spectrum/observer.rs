@@ -76,10 +76,11 @@ const fn rows() -> [[f64; 12]; SEGMENTS] {
 /// (`DenseObserver`). A hero sample takes its weights from one when it is
 /// drawn.
 pub trait Observer {
-    /// `[x̄, ȳ, z̄, 1]` at each wavelength of `at`, in its precision (the
-    /// fourth column, 1 at every wavelength, becomes the pdf's weight
-    /// `1/(K·pdf)` when a sample scales the row by it: one four-lane
-    /// multiplication per wavelength).
+    /// `[x̄, ȳ, z̄, 1]` at each wavelength of `at`, in its precision (a
+    /// sample scales the row by the pdf's weight `1/(K·pdf)` in one
+    /// four-lane multiplication, and the fourth column becomes that
+    /// weight; a sample sets it itself, so what an implementation puts
+    /// there does not change the pdf).
     fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K];
 }
 

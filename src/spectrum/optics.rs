@@ -75,7 +75,7 @@ pub struct NormalReflectance<'a> {
 impl NormalReflectance<'_> {
     /// The reflectance tabulated from 380 to 730 nm at every whole
     /// nanometre and every sample of η and k, linear between (within 2e-5
-    /// of the formula, `tests/named.rs`): the form the study's commands
+    /// of the formula, `tests/truth/named.rs`): the form the study's commands
     /// take a surface in.
     #[must_use]
     pub fn tabulated(&self) -> TabulatedSpectrum {

@@ -106,9 +106,13 @@ mod tests {
         check::<3>();
         check::<4>();
         check::<5>();
+        check::<6>();
         check::<7>();
         check::<8>();
+        check::<9>();
         check::<10>();
+        check::<11>();
+        check::<12>();
         check::<13>();
         check::<16>();
     }

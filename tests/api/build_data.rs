@@ -4,7 +4,7 @@
 //! temporary directory, so the real build is not broken) gives the
 //! `file:line:column: expected …, found …` message that fails the build.
 //! (That the generated statics are the run-time loader's tables is
-//! `tests/data.rs`.)
+//! `tests/truth/data.rs`.)
 
 use std::path::PathBuf;
 

@@ -38,14 +38,16 @@ fn check<T: Float>() {
         vec![Box::new(tables[0].clone()), Box::new(tables[1].clone()), Box::new(rgb)];
     let own = [Material::Table(tables[0].clone()), Material::Table(tables[1].clone()), Material::Rgb(rgb)];
     for i in 0..500 {
-        // Wavelengths at and beside the half nanometres, where rounding
-        // from the wavelength again could differ from the sample's own.
+        // 500 evenly spread samples (`samples_beside_the_halves` targets the
+        // half nanometres, where rounding could differ).
         let h = HeroSample::<4, T>::new(T::from_f64((f64::from(i) + 0.5) / 500.0));
         for (t, table) in tables[..2].iter().enumerate() {
             let direct = table.sample(&h);
             assert_eq!(boxed[t].sample(&h), direct, "boxed, table {t}, {h:?}");
             let by_ref: &dyn Spectrum = &*boxed[t];
             assert_eq!(h.sample(&by_ref), direct, "&dyn, table {t}");
+            // The enum forwards to the table's own `sample`: equal by
+            // construction; the line keeps the documented form compiling.
             assert_eq!(own[t].sample(&h), direct, "enum, table {t}");
         }
         assert_eq!(boxed[2].sample(&h), rgb.sample(&h), "boxed RGB");

@@ -2,7 +2,7 @@
 //! arithmetic, wavelengths and pdfs from the renderer's own sampler, pbrt's
 //! `TerminateSecondary`, and luminance alone.
 //!
-//! Statistical checks follow `tests/unbiased.rs`: `TRIALS` independent
+//! Statistical checks follow `study/tests/study/unbiased.rs`: `TRIALS` independent
 //! estimates of `N` samples each per cell, and the mean within `Z_MAX`
 //! standard errors of the exact reference on every channel of every cell
 //! (54 checks; a correct estimator fails one at 4.5σ with probability
@@ -139,6 +139,28 @@ fn terminate_secondary_keeps_the_hero_alone() {
         "the hero alone is a K = 1 sample"
     );
     assert!(HeroSample::<1>::new(0.3).secondary_terminated(), "K = 1 has no secondaries");
+}
+
+/// An observer of the caller's own that leaves the fourth column at 0
+/// (not the documented 1) still gives the sample its pdf, and
+/// `terminate_secondary` still works.
+#[test]
+fn an_observer_of_ones_own_keeps_the_pdf() {
+    use speclab::spectrum::{Cie1931, Float, Observer, Wavelengths};
+    struct ZeroFourth;
+    impl Observer for ZeroFourth {
+        fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
+            Cie1931.xyz_bar_at(at).map(|[x, y, z, _]| [x, y, z, T::ZERO])
+        }
+    }
+    let mut own = HeroSample::<4>::with_observer(0.1, &ZeroFourth);
+    let exact = HeroSample::<4>::exact(0.1);
+    assert_eq!(own.pdf(), exact.pdf());
+    let v = data::lights::D65.sample(&own);
+    assert_eq!(own.to_xyz(v), exact.to_xyz(v));
+    own.terminate_secondary();
+    assert!(own.secondary_terminated());
+    assert_eq!(own.pdf(), [1.0 / (4.0 * LAMBDA_WIDTH), 0.0, 0.0, 0.0]);
 }
 
 /// A renderer's own wavelength distribution, p(λ) ∝ 1 + t over the range

@@ -44,7 +44,7 @@ fn rules_for_each_light_share_wavelengths_and_keep_each_white() {
 /// F11 and A in one scene at M = 10: each light's own weights bring every
 /// patch within ΔE00 1 under either light, and the worst patch is at
 /// least twice as close as with one rule for both (regression snapshot:
-/// 0.34 against 1.61, `cargo test --test fitted -- --nocapture`).
+/// 0.34 against 1.61, `cargo test --test properties fitted -- --nocapture`).
 #[test]
 fn each_lights_weights_beat_one_rule_for_two_lights() {
     use speclab::color::difference::delta_e00;

@@ -120,7 +120,7 @@ fn zero_regions_are_never_drawn() {
 fn dark_lights_are_errors() {
     let dark = TabulatedSpectrum::new(vec![380.0, 730.0], vec![0.0, 0.0], Role::Light).expect("valid");
     // Power only beyond 730 nm, none within the range (a file like this is
-    // refused when loaded: `tests/input_errors.rs`).
+    // refused when loaded: `tests/api/input_errors.rs`).
     let beyond =
         TabulatedSpectrum::new(vec![380.0, 730.0, 760.0, 780.0], vec![0.0, 0.0, 5.0, 5.0], Role::Light)
             .expect("valid samples");
@@ -149,7 +149,7 @@ fn spread(values: &[f64], sigma: f64) -> (f64, f64) {
 /// Under non-uniform pdfs, the standard deviation of 4,000 one-sample
 /// estimates matches the exact variance within 10 %, or within 4 standard
 /// errors of the sample standard deviation where heavy tails make that
-/// error large (as `tests/stability.rs` does for uniform sampling).
+/// error large (as `study/tests/study/stability.rs` does for uniform sampling).
 #[test]
 fn spread_matches_exact_variance() {
     use speclab::data::Patch;

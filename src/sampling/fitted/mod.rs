@@ -90,7 +90,7 @@ impl Rule {
     /// more accurate than one rule serving every light whenever the lights
     /// differ (F11 and A in one scene: ΔE00 over the six patches at
     /// M = 10 at most 0.34 with each light's weights, 1.6 with one
-    /// rule for both; measured by `tests/fitted.rs`). Errors as [`Rule::fit`].
+    /// rule for both; measured by `tests/properties/fitted.rs`). Errors as [`Rule::fit`].
     ///
     /// ```
     /// use speclab::data::{lights, patches};

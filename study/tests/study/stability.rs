@@ -1,6 +1,6 @@
 //! Each method tested exactly where it fails. Every test states what it pins
 //! down and why; the figures in comments come from the test's own output
-//! (`cargo test --release --test stability -- --nocapture`).
+//! (`cargo test --release -p speclab-study --test study stability -- --nocapture`).
 
 use std::num::NonZeroUsize;
 

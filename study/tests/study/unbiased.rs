@@ -98,7 +98,7 @@ fn every_pdf_and_strata_is_unbiased() {
 }
 
 /// The sweep on all 18 cells: 18 s in a debug build, 2 s in release, where
-/// CI runs it (`cargo test --release --test unbiased -- --ignored`).
+/// CI runs it (`cargo test --release -p speclab-study --test study unbiased -- --ignored`).
 #[test]
 #[ignore = "the whole sweep; CI runs it in release"]
 fn every_pdf_and_strata_is_unbiased_on_every_cell() {
