@@ -144,3 +144,30 @@ impl<R: Rng + ?Sized> Iterator for Points<'_, R> {
         (left, Some(left))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Strata;
+
+    /// `point_f32` is the largest `f32` not above `point`: below 1, and
+    /// the next `f32` up is above the `f64` point (rounding down where
+    /// nearest rounding went up, at the top of the range too).
+    #[test]
+    fn f32_points_round_down_to_below_one() {
+        let us = [0.0, 0.1, 0.333_333_34, 0.5, 0.9, 1.0 - f32::EPSILON / 2.0];
+        let mut rounded_up = 0;
+        for strata in [Strata::None, Strata::Jittered, Strata::Kronecker] {
+            for (n, k) in [(1, 1), (3, 4), (16, 4), (7, 3), (1000, 1)] {
+                for i in 0..n.min(40) {
+                    for &u in &us {
+                        let (p, r) = (strata.point(i, n, k, f64::from(u)), strata.point_f32(i, n, k, u));
+                        assert!((0.0..1.0).contains(&r), "{strata:?} {i}/{n} k {k} u {u}: {r}");
+                        assert!(f64::from(r) <= p && f64::from(r.next_up()) > p, "{p} → {r}");
+                        rounded_up += usize::from(f64::from(p as f32) > p);
+                    }
+                }
+            }
+        }
+        assert!(rounded_up > 0, "some points round up to the nearest f32");
+    }
+}
