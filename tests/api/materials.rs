@@ -51,6 +51,11 @@ fn check<T: Float>() {
             assert_eq!(own[t].sample(&h), direct, "enum, table {t}");
         }
         assert_eq!(boxed[2].sample(&h), rgb.sample(&h), "boxed RGB");
+        // and both are the albedo's values (not only equal to each other).
+        for (v, l) in boxed[2].sample(&h).values.into_iter().zip(h.lambda()) {
+            let eval = rgb.eval(l.to_f64());
+            assert!((v.to_f64() - eval).abs() <= 1e-6 * eval.max(1e-3), "RGB at {l:?}: {v:?} against {eval}");
+        }
         assert_eq!(own[2].sample(&h), rgb.sample(&h), "enum RGB");
         // Scaled (a light at another intensity) keeps it too.
         let scaled: Box<dyn Spectrum> = Box::new(&tables[2] * 4.0);
