@@ -82,8 +82,8 @@ mod tests {
     use super::{map, weighted_sum, zip};
     use crate::spectrum::float::sealed::Sealed;
 
-    /// Every count from 1 to 13: whole vectors and padded tails give the
-    /// scalar results (exact for +, −, ×, ÷; within rounding for the sums).
+    /// Every count from 1 to 13, 16 and 21 (past four accumulators of
+    /// four): whole vectors and padded tails give the scalar results (exact for +, −, ×, ÷; within rounding for the sums).
     #[test]
     fn lanes_agree_with_scalars() {
         fn check<const N: usize>() {
@@ -115,5 +115,6 @@ mod tests {
         check::<12>();
         check::<13>();
         check::<16>();
+        check::<21>();
     }
 }
