@@ -83,7 +83,8 @@ mod tests {
     use crate::spectrum::float::sealed::Sealed;
 
     /// Every count from 1 to 13, 16 and 21 (past four accumulators of
-    /// four): whole vectors and padded tails give the scalar results (exact for +, −, ×, ÷; within rounding for the sums).
+    /// four): whole vectors and padded tails give the scalar results
+    /// (exact for +, −, ×, ÷; within rounding for the sums).
     #[test]
     fn lanes_agree_with_scalars() {
         fn check<const N: usize>() {
