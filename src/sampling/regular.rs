@@ -67,7 +67,7 @@ pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
     /// wavelengths).
     const ROWS_F64: &'static [[f64; 4]; M] = &rows::<M>(Self::RULE);
     /// The same, rounded to `f32`.
-    const ROWS_F32: &'static [[f32; 4]; M] = &rounded(Self::ROWS_F64);
+    const ROWS_F32: &'static [[f32; 4]; M] = &crate::spectrum::float::rounded(Self::ROWS_F64);
     /// The `M` bucket values of `s`.
     fn buckets<S: Spectrum + ?Sized>(s: &S) -> [f64; M];
 
@@ -131,21 +131,6 @@ const fn rows<const M: usize>(rule: BucketRule) -> [[f64; 4]; M] {
     while i < M {
         let w = rule.observer(i, M);
         out[i] = [width * w[0], width * w[1], width * w[2], 0.0];
-        i += 1;
-    }
-    out
-}
-
-/// `rows` rounded to `f32`, at compile time.
-const fn rounded<const M: usize>(rows: &[[f64; 4]; M]) -> [[f32; 4]; M] {
-    let mut out = [[0.0; 4]; M];
-    let mut i = 0;
-    while i < M {
-        let mut c = 0;
-        while c < 4 {
-            out[i][c] = rows[i][c] as f32;
-            c += 1;
-        }
         i += 1;
     }
     out

@@ -186,7 +186,7 @@ impl Observer for DenseObserver {
 /// The observer's rows at every whole nanometre, then zeros.
 static ROWS_F64: [[f64; 4]; DENSE_ENTRIES] = observer_rows();
 /// The same, rounded to `f32`.
-static ROWS_F32: [[f32; 4]; DENSE_ENTRIES] = rounded(&ROWS_F64);
+static ROWS_F32: [[f32; 4]; DENSE_ENTRIES] = crate::spectrum::float::rounded(&ROWS_F64);
 
 /// `[x̄, ȳ, z̄, 1]` per whole nanometre, and `[0, 0, 0, 1]` outside (a
 /// wavelength outside weighs nothing but keeps its pdf).
@@ -196,20 +196,6 @@ const fn observer_rows() -> [[f64; 4]; DENSE_ENTRIES] {
     while i < OUTSIDE as usize {
         let [x, y, z] = xyz_bar_const(LAMBDA_MIN + i as f64);
         out[i] = [x, y, z, 1.0];
-        i += 1;
-    }
-    out
-}
-
-const fn rounded(rows: &[[f64; 4]; DENSE_ENTRIES]) -> [[f32; 4]; DENSE_ENTRIES] {
-    let mut out = [[0.0; 4]; DENSE_ENTRIES];
-    let mut i = 0;
-    while i < DENSE_ENTRIES {
-        let mut c = 0;
-        while c < 4 {
-            out[i][c] = rows[i][c] as f32;
-            c += 1;
-        }
         i += 1;
     }
     out

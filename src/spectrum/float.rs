@@ -274,3 +274,19 @@ impl sealed::Sealed for f64 {
         f64s
     }
 }
+
+/// Weight rows rounded to `f32`, at compile time (the dense observer's
+/// and the buckets' `f32` tables).
+pub(crate) const fn rounded<const M: usize>(rows: &[[f64; 4]; M]) -> [[f32; 4]; M] {
+    let mut out = [[0.0; 4]; M];
+    let mut i = 0;
+    while i < M {
+        let mut c = 0;
+        while c < 4 {
+            out[i][c] = rows[i][c] as f32;
+            c += 1;
+        }
+        i += 1;
+    }
+    out
+}
