@@ -86,11 +86,7 @@ impl RgbTable {
     /// The albedo of `rgb` (each component in [0, 1]; otherwise an
     /// [`Error::Albedo`]), interpolated from the table.
     pub fn albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
-        let c = rgb.into().to_array();
-        if !c.iter().all(|v| (0.0..=1.0).contains(v)) {
-            return Err(Error::Albedo { rgb: c });
-        }
-        Ok(RgbAlbedo::from_polynomial(self.lookup(c)))
+        Ok(RgbAlbedo::from_polynomial(self.lookup(albedo_components(rgb.into())?)))
     }
 
     /// `rgb` (negatives and NaN as 0) as `(scale, polynomial)`: twice its
@@ -164,4 +160,10 @@ fn case_table(space: &RgbSpace, z: &[f64], case: usize) -> Vec<[f64; 3]> {
         }
     }
     out
+}
+
+/// An albedo's components, each in [0, 1] (otherwise an [`Error::Albedo`]).
+pub(crate) fn albedo_components(rgb: LinearRgb) -> Result<[f64; 3], Error> {
+    let c = rgb.to_array();
+    if c.iter().all(|v| (0.0..=1.0).contains(v)) { Ok(c) } else { Err(Error::Albedo { rgb: c }) }
 }

@@ -244,10 +244,7 @@ impl RgbSpace {
     /// polynomial comes, for a colour no reflectance has (outside the
     /// object colours of the illuminant: much of ACES2065-1's cube).
     pub fn fit_albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
-        let c = rgb.into().to_array();
-        if !c.iter().all(|v| (0.0..=1.0).contains(v)) {
-            return Err(Error::Albedo { rgb: c });
-        }
+        let c = crate::color::rgb_table::albedo_components(rgb.into())?;
         Ok(RgbAlbedo::from_polynomial(self.fit.fit(c)))
     }
 

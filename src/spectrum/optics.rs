@@ -28,6 +28,7 @@
 
 use crate::error::Error;
 use crate::spectrum::interface::{Pieces, Spectrum};
+use crate::spectrum::interp;
 use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
@@ -211,11 +212,7 @@ impl Spectrum for Cauchy {
     fn max_value(&self) -> f64 {
         let u = |lambda: f64| 1.0 / (lambda * 1e-3).powi(2);
         let (lo, hi) = (u(LAMBDA_MAX), u(LAMBDA_MIN));
-        let n = |u: f64| self.a + self.b * u + self.c * u * u;
-        let vertex = -self.b / (2.0 * self.c);
-        let inside = self.c < 0.0 && (lo..=hi).contains(&vertex);
-        let ends = n(lo).max(n(hi));
-        if inside { ends.max(n(vertex)) } else { ends }
+        interp::segment_max([self.a, self.b, self.c, 0.0], lo, hi)
     }
 }
 

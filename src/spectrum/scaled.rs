@@ -107,7 +107,7 @@ impl<S: Spectrum> Spectrum for Scaled<S> {
 macro_rules! scale_by_mul {
     ($($ty:ty),* $(,)?) => {$(
         impl<'a> ::std::ops::Mul<f64> for &'a $ty {
-            type Output = $crate::spectrum::Scaled<&'a $ty>;
+            type Output = $crate::spectrum::Scaled<Self>;
             /// The spectrum scaled by `factor`, borrowed: no allocation.
             fn mul(self, factor: f64) -> Self::Output {
                 $crate::spectrum::Scaled::new(self, factor)
@@ -118,23 +118,7 @@ macro_rules! scale_by_mul {
 
 pub(crate) use scale_by_mul;
 
-scale_by_mul!(TabulatedSpectrum, DenseSpectrum, Constant, Blackbody);
-
-impl<'a, 'b> Mul<f64> for &'a Mixture<'b> {
-    type Output = Scaled<&'a Mixture<'b>>;
-    /// The sum scaled by `factor`, borrowed: no allocation.
-    fn mul(self, factor: f64) -> Self::Output {
-        Scaled::new(self, factor)
-    }
-}
-
-impl<'a, 'b> Mul<f64> for &'a Product<'b> {
-    type Output = Scaled<&'a Product<'b>>;
-    /// The product scaled by `factor`, borrowed: no allocation.
-    fn mul(self, factor: f64) -> Self::Output {
-        Scaled::new(self, factor)
-    }
-}
+scale_by_mul!(TabulatedSpectrum, DenseSpectrum, Constant, Blackbody, Mixture<'_>, Product<'_>);
 
 impl<S> Mul<f64> for Scaled<S> {
     type Output = Scaled<S>;

@@ -27,6 +27,7 @@
 use std::borrow::Cow;
 
 use crate::spectrum::interface::Pieces;
+use crate::spectrum::interp;
 use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH};
 
 /// `½ + x/(2√(1 + x²))` over a quadratic in `t = (λ − 380)/350`.
@@ -67,13 +68,7 @@ impl SigmoidPolynomial {
     #[must_use]
     pub fn max_value(&self) -> f64 {
         let [c0, c1, c2] = self.c;
-        if self.is_constant() {
-            return sigmoid(c2);
-        }
-        let x = |t: f64| c2 + t * (c1 + t * c0);
-        let vertex = -c1 / (2.0 * c0);
-        let ends = x(0.0).max(x(1.0));
-        sigmoid(if c0 < 0.0 && (0.0..=1.0).contains(&vertex) { ends.max(x(vertex)) } else { ends })
+        sigmoid(interp::segment_max([c2, c1, c0, 0.0], 0.0, 1.0))
     }
 
     /// True if the polynomial is a constant (`c₀ = c₁ = 0`).

@@ -243,13 +243,15 @@ pub fn trace<P: Carry>(
         // Russian roulette as pbrt-v4's: after the second bounce, end the
         // path with probability 1 − max β (the largest component over the
         // wavelengths or channels), and divide a survivor's β by max β.
-        let survival = paint.max_component(path, beta);
-        if depth >= 2 && survival < 1.0 {
-            if rng.uniform() >= survival {
-                break;
+        if depth >= 2 {
+            let survival = paint.max_component(path, beta);
+            if survival < 1.0 {
+                if rng.uniform() >= survival {
+                    break;
+                }
+                beta = paint.scale(beta, 1.0 / survival);
+                factor /= survival;
             }
-            beta = paint.scale(beta, 1.0 / survival);
-            factor /= survival;
         }
         origin = add(hit.point, scale(n, 1e-6));
         dir = cosine(n, rng);
