@@ -99,6 +99,15 @@ pub enum Error {
         /// The weight given.
         weight: f64,
     },
+    /// An entry of a rule given by its wavelengths and weights
+    /// (`Rule::new`): a wavelength outside 380–730 nm, a weight that is not
+    /// finite, or rows of unequal length.
+    RuleEntry {
+        /// Which wavelength of the rule.
+        index: usize,
+        /// The wavelength given, nm (NaN where a row is too short).
+        lambda: f64,
+    },
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
         /// What was looked up, e.g. `a built-in light`.
@@ -162,6 +171,10 @@ impl fmt::Display for Error {
             Error::Weight { index, weight } => {
                 write!(f, "term {index}: expected a finite non-negative weight, found {weight}")
             }
+            Error::RuleEntry { index, lambda } => write!(
+                f,
+                "rule wavelength {index}: expected a wavelength in 380–730 nm with a finite weight in each of X, Y and Z, found {lambda} nm"
+            ),
             Error::UnknownName { what, expected, found } if expected.len() <= 12 => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))
             }

@@ -68,6 +68,28 @@ impl<L: Spectrum> PreparedLight<L> {
         self.weights.grid()
     }
 
+    /// The weights, as rows for x̄, ȳ and z̄, one per grid sample (nm):
+    /// `XYZ꜀ = Σᵢ w꜀ᵢ·rᵢ` for every reflectance with samples `r` on the
+    /// grid whose interpolant stays in `[0, 1]` (where it leaves it,
+    /// [`PreparedLight::xyz_samples`] integrates the clamp exactly). On an
+    /// equidistant grid they are the light's tristimulus weighting factors
+    /// in the sense of ASTM E2022 (the Lagrange basis of the reflectance's
+    /// interpolant integrated against light × observer), unnormalised, over
+    /// 380–730 nm and integrated exactly.
+    ///
+    /// ```
+    /// use speclab::{data::{lights, patches}, sampling::PreparedLight};
+    /// let d65 = PreparedLight::for_grid(&lights::D65, patches::G4.lambda(), patches::G4.interpolation())?;
+    /// let [_, wy, _] = d65.weights();
+    /// let y: f64 = wy.iter().zip(patches::G4.values()).map(|(w, r)| w * r).sum();
+    /// assert!((y - d65.xyz(&patches::G4).y).abs() <= 1e-12 * y);
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    #[must_use]
+    pub fn weights(&self) -> &[Vec<f64>; 3] {
+        self.weights.columns()
+    }
+
     /// The samples of `surface`, if it is a reflectance interpolating
     /// samples on this light's grid, with its interpolation.
     fn samples_of<'s>(&self, surface: &'s (impl Spectrum + ?Sized)) -> Option<&'s [f64]> {

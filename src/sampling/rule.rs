@@ -31,7 +31,7 @@ use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::buckets::{BucketRule, center};
 use crate::sampling::wavelengths::{FixedWavelengths, Weighted, dot_slices};
-use crate::spectrum::{Float, LAMBDA_WIDTH, Spectrum};
+use crate::spectrum::{Float, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
 /// The most wavelengths a rule takes (buckets and fitted rules alike).
 pub const MAX_M: usize = 64;
@@ -43,6 +43,9 @@ pub enum RuleKind {
     Buckets(BucketRule),
     /// Wavelengths and weights fitted to lights.
     Fitted,
+    /// Wavelengths and weights given by the caller ([`Rule::new`]): a
+    /// published rule (a quadrature, an ASTM E308 table) or a renderer's own.
+    Given,
 }
 
 /// M wavelengths and their XYZ weights, M chosen at run time.
@@ -66,6 +69,45 @@ impl Rule {
         let lambda = (0..m).map(|i| center(i, m)).collect();
         let weights = [0, 1, 2].map(|c| (0..m).map(|i| rule.observer(i, m)[c]).collect());
         Ok(Rule { kind: RuleKind::Buckets(rule), lambda, weights, scale: LAMBDA_WIDTH / m as f64 })
+    }
+
+    /// The rule of these wavelengths (nm) and weight rows `[w_X, w_Y, w_Z]`
+    /// (nm, one per wavelength each; XYZ꜀ = `Σᵢ w꜀ᵢ·vᵢ`), sorted by
+    /// wavelength. An [`Error::Count`] unless `1 ≤ M ≤` [`MAX_M`]; an
+    /// [`Error::RuleEntry`] for a wavelength outside 380–730 nm, a weight
+    /// that is not finite or a row of another length.
+    ///
+    /// ```
+    /// use speclab::data::{lights, patches};
+    /// use speclab::sampling::{reference, rule::Rule};
+    /// // One wavelength carrying the whole of E's Y, its weight including
+    /// // the light (as published rules do: pass the reflectances alone).
+    /// let y = reference::white(&lights::E).y;
+    /// let rule = Rule::new(vec![555.0], [vec![0.0], vec![y], vec![0.0]])?;
+    /// assert_eq!(rule.xyz_of_product(&[&patches::A1]).y, y * patches::A1.eval(555.0));
+    /// assert!(Rule::new(vec![800.0], [vec![1.0], vec![1.0], vec![1.0]]).is_err());
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    pub fn new(lambda: Vec<f64>, weights: [Vec<f64>; 3]) -> Result<Rule, Error> {
+        let m = lambda.len();
+        check_m("a rule's wavelength count", m)?;
+        let rows = weights.iter().map(Vec::len).min().unwrap_or(0);
+        let valid = |i: usize| {
+            (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda[i])
+                && i < rows
+                && weights.iter().all(|r| r[i].is_finite())
+        };
+        if let Some(i) = (0..m).find(|&i| !valid(i)) {
+            return Err(Error::RuleEntry { index: i, lambda: lambda[i] });
+        }
+        if weights.iter().any(|r| r.len() != m) {
+            return Err(Error::RuleEntry { index: m, lambda: f64::NAN });
+        }
+        let mut order: Vec<usize> = (0..m).collect();
+        order.sort_by(|&a, &b| lambda[a].total_cmp(&lambda[b]));
+        let lambda = order.iter().map(|&i| lambda[i]).collect();
+        let weights = [0, 1, 2].map(|c| order.iter().map(|&i| weights[c][i]).collect());
+        Ok(Rule { kind: RuleKind::Given, lambda, weights, scale: 1.0 })
     }
 
     /// A fitted rule of these wavelengths (nm) and `[X, Y, Z]` weights.
@@ -211,4 +253,33 @@ impl Rule {
 /// An [`Error::Count`] naming `what` unless `1 ≤ m ≤` [`MAX_M`].
 pub(crate) fn check_m(what: &'static str, m: usize) -> Result<(), Error> {
     if (1..=MAX_M).contains(&m) { Ok(()) } else { Err(Error::Count { what, found: m, min: 1, max: MAX_M }) }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_given_rule_is_sorted_and_checked_entry_by_entry() {
+        let rule = Rule::new(vec![600.0, 450.0], [vec![1.0, 2.0], vec![3.0, 4.0], vec![5.0, 6.0]]).unwrap();
+        assert_eq!((rule.kind(), rule.lambda()), (RuleKind::Given, &[450.0, 600.0][..]));
+        assert_eq!(rule.weights(), (&[vec![2.0, 1.0], vec![4.0, 3.0], vec![6.0, 5.0]], 1.0));
+        let rows = |w: [f64; 2]| [w.to_vec(), vec![1.0; 2], vec![1.0; 2]];
+        let entry = |e: Result<Rule, Error>| match e {
+            Err(Error::RuleEntry { index, lambda }) => Some((index, lambda)),
+            _ => None,
+        };
+        assert_eq!(entry(Rule::new(vec![500.0, 731.0], rows([1.0, 1.0]))), Some((1, 731.0)));
+        assert_eq!(entry(Rule::new(vec![379.0, 500.0], rows([1.0, 1.0]))), Some((0, 379.0)));
+        assert_eq!(entry(Rule::new(vec![500.0, 600.0], rows([1.0, f64::NAN]))), Some((1, 600.0)));
+        assert_eq!(entry(Rule::new(vec![500.0, 600.0], rows([f64::INFINITY, 1.0]))), Some((0, 500.0)));
+        let short = [vec![1.0], vec![1.0; 2], vec![1.0; 2]];
+        assert_eq!(entry(Rule::new(vec![500.0, 600.0], short)), Some((1, 600.0)));
+        let long = Rule::new(vec![500.0, 600.0], [vec![1.0; 3], vec![1.0; 2], vec![1.0; 2]]);
+        assert!(matches!(entry(long), Some((2, l)) if l.is_nan()));
+        assert!(matches!(Rule::new(Vec::new(), Default::default()), Err(Error::Count { found: 0, .. })));
+        let edges = Rule::new(vec![LAMBDA_MIN, LAMBDA_MAX], rows([1.0, 1.0])).unwrap();
+        assert_eq!(edges.m(), 2);
+        assert!(Error::RuleEntry { index: 1, lambda: 731.0 }.to_string().contains("rule wavelength 1"));
+    }
 }

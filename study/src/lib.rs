@@ -40,6 +40,7 @@ mod error;
 pub mod evaluate;
 pub mod experiments;
 pub mod planning;
+pub mod published;
 pub mod render;
 
 pub use error::StudyError;

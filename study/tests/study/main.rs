@@ -6,6 +6,7 @@ mod depth;
 mod finite;
 mod names;
 mod plan;
+mod published;
 mod stability;
 mod threads;
 mod unbiased;

@@ -1,0 +1,171 @@
+//! The fitted rule beside the published few-wavelength rules (ASTM E308 /
+//! E2022, Borges 1994, Meyer 1988, Wallis 1975) and Ward's spectral
+//! prefiltering, on every built-in light × the 53 held-apart reflectances
+//! (`data/held-apart/`, in no fitted prior): worst / mean ΔE00 and pairs
+//! above 1, at depth 1 and 2, then each light's worst for the targets of
+//! docs/published-rules.md. Markdown, as the docs quote it.
+//!
+//! ```text
+//! cargo run --release --example published
+//! cargo run --release --example published -- --depth 2
+//! ```
+
+use std::fmt::Write as _;
+use std::io::{self, Write as _};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use speclab_cli::args::{fail, finish};
+use speclab_study::StudyError;
+use speclab_study::evaluate::scene::{self, Depth, Named};
+use speclab_study::published::compare::{self, Candidate, Row};
+use speclab_study::published::prefilter::Space;
+use speclab_study::published::{held_apart, rules::Family};
+
+const USAGE: &str = "\
+usage: published [--depth D]
+  --depth D   surfaces per path, 1 to 4; repeat for several (default: 1 and 2)";
+
+/// The Ms the table shows.
+const MS: [usize; 9] = [4, 6, 8, 10, 12, 16, 18, 24, 36];
+
+fn main() -> ExitCode {
+    let mut depths = Vec::new();
+    let mut parser = lexopt::Parser::from_env();
+    loop {
+        use lexopt::prelude::*;
+        match parser.next() {
+            Ok(None) => break,
+            Ok(Some(Long("depth"))) => match parser.value().and_then(|v| v.parse::<usize>()) {
+                Ok(d) => depths.push(d),
+                Err(e) => return fail("published", format!("{e}\n{USAGE}")),
+            },
+            Ok(Some(Short('h') | Long("help"))) => {
+                println!("{USAGE}");
+                return ExitCode::SUCCESS;
+            }
+            Ok(Some(other)) => return fail("published", format!("{}\n{USAGE}", other.unexpected())),
+            Err(e) => return fail("published", format!("{e}\n{USAGE}")),
+        }
+    }
+    if depths.is_empty() {
+        depths = vec![1, 2];
+    }
+    match report(&depths) {
+        Ok(text) => {
+            let out = &mut io::stdout().lock();
+            finish("published", out.write_all(text.as_bytes()).and_then(|()| out.flush()))
+        }
+        Err(e) => fail("published", e),
+    }
+}
+
+/// The whole report, as Markdown.
+fn report(depths: &[usize]) -> Result<String, StudyError> {
+    let (lights, surfaces) = (scene::every_light(), held_apart::all()?);
+    let mut out = String::new();
+    // Writing to a String cannot fail.
+    let w = |out: &mut String, s: String| -> Result<(), StudyError> {
+        let _ = writeln!(out, "{s}");
+        Ok(())
+    };
+    fit_times(&lights, &mut out)?;
+    for &d in depths {
+        let depth = Depth::new(d)?;
+        w(&mut out, format!("\n## Depth {d}: {} lights × {} reflectances\n", lights.len(), surfaces.len()))?;
+        w(&mut out, "| M | fitted | borges | meyer | wallis | astm (interval) |".into())?;
+        w(&mut out, "|---:|---|---|---|---|---|".into())?;
+        let mut by_m = Vec::new();
+        for m in MS {
+            let mut candidates = vec![Candidate::Fitted(m)];
+            candidates.extend(Family::ALL.map(|f| Candidate::Published(f, m)).into_iter().filter(
+                |c| match c {
+                    Candidate::Published(f, m) => *m >= f.min_m(),
+                    _ => true,
+                },
+            ));
+            let rows = compare::table(&lights, &surfaces, &candidates, depth)?;
+            let cell = |name: &str| {
+                rows.iter().find(|r| r.candidate.to_string().starts_with(name)).map_or("–".into(), summary)
+            };
+            let astm = rows.iter().find(|r| matches!(r.candidate, Candidate::Published(Family::Astm, _)));
+            let astm = astm.map_or("–".into(), |r| format!("{} ({})", summary(r), r.candidate));
+            w(
+                &mut out,
+                format!(
+                    "| {m} | {} | {} | {} | {} | {astm} |",
+                    cell("fitted"),
+                    cell("borges"),
+                    cell("meyer"),
+                    cell("wallis")
+                ),
+            )?;
+            by_m.push((m, rows));
+        }
+        let pre = compare::table(&lights, &surfaces, &Space::ALL.map(Candidate::Prefiltered), depth)?;
+        w(&mut out, String::new())?;
+        for r in &pre {
+            w(&mut out, format!("{} (3 numbers per surface): {}", r.candidate, summary(r)))?;
+        }
+        per_light(&lights, &by_m, &mut out);
+    }
+    Ok(out)
+}
+
+/// `worst / mean / pairs above 1` (and lights without the rule).
+fn summary(r: &Row) -> String {
+    let missing = r.per_light.iter().filter(|w| w.is_nan()).count();
+    let gap = if missing > 0 { format!(", {missing} lights without") } else { String::new() };
+    if r.pairs == 0 {
+        return format!("none{gap}");
+    }
+    format!("{:.2} / {:.3} / {}{gap}", r.worst, r.mean, r.above_one)
+}
+
+/// Light by light: fitted M = 10 against ASTM at 20 nm (M = 18), fitted
+/// M = 12 against ASTM at 10 nm (M = 36).
+fn per_light(lights: &[Named], by_m: &[(usize, Vec<Row>)], out: &mut String) {
+    let row = |m: usize, pick: &dyn Fn(&Candidate) -> bool| {
+        by_m.iter().find(|(k, _)| *k == m).and_then(|(_, rows)| rows.iter().find(|r| pick(&r.candidate)))
+    };
+    let fitted = |m| row(m, &|c| matches!(c, Candidate::Fitted(_)));
+    let astm = |m| row(m, &|c| matches!(c, Candidate::Published(Family::Astm, _)));
+    for (fm, am) in [(10, 18), (12, 36)] {
+        let (Some(f), Some(a)) = (fitted(fm), astm(am)) else { continue };
+        let losses: Vec<String> = lights
+            .iter()
+            .zip(f.per_light.iter().zip(&a.per_light))
+            .filter(|(_, (f, a))| f >= a)
+            .map(|(l, (f, a))| format!("{} {f:.2}/{a:.2}", l.name))
+            .collect();
+        let line = format!(
+            "\nfitted M = {fm} against {}: worst at or above ASTM's on {} of {} lights{}{}",
+            a.candidate,
+            losses.len(),
+            lights.len(),
+            if losses.is_empty() { "" } else { ": " },
+            losses.join(", ")
+        );
+        let _ = writeln!(out, "{line}");
+    }
+}
+
+/// The fit's time per M for one light (D65), first fit in the process
+/// included in the first M.
+fn fit_times(lights: &[Named], out: &mut String) -> Result<(), StudyError> {
+    let d65 = lights.iter().find(|l| l.name == "D65").unwrap_or(&lights[0]);
+    let mut times = Vec::new();
+    let rules = speclab::sampling::fitted::FittedRules::of(&d65.spectrum)?;
+    for m in MS {
+        let start = Instant::now();
+        rules.rule(m)?;
+        times.push(format!("M = {m}: {:.0} ms", start.elapsed().as_secs_f64() * 1e3));
+    }
+    let _ = writeln!(
+        out,
+        "Fit time under {} (one thread; the first includes the prior's moments): {}",
+        d65.name,
+        times.join(", ")
+    );
+    Ok(())
+}

@@ -1,0 +1,176 @@
+//! Each candidate rule against the exact colour over lights × surfaces:
+//! the worst and mean ΔE00 (relative to each light's white), how many
+//! pairs exceed 1, and each light's worst, at one path depth.
+//!
+//! A path of depth d is light × surface^d. A fitted rule weights the
+//! whole product at its wavelengths; a published rule's weights include
+//! its light, so it weights the surfaces' product alone; prefiltering
+//! multiplies the surfaces' three numbers.
+//!
+//! ```
+//! use speclab_study::evaluate::scene::{self, Depth};
+//! use speclab_study::published::{compare::{self, Candidate}, prefilter::Space};
+//! let (lights, surfaces) = (scene::builtin_lights(), scene::builtin_surfaces());
+//! let rows = compare::table(&lights, &surfaces, &[Candidate::Prefiltered(Space::Sharp)], Depth::ONE)?;
+//! assert!(rows[0].worst < 1e-6 && rows[0].pairs == 18); // exact at one bounce
+//! # Ok::<(), speclab_study::StudyError>(())
+//! ```
+
+use std::fmt;
+
+use rayon::prelude::*;
+
+use speclab::color::Xyz;
+use speclab::sampling::reference;
+use speclab::sampling::rule::Rule;
+use speclab::spectrum::{Spectrum, TabulatedSpectrum};
+
+use crate::StudyError;
+use crate::evaluate::perceptual;
+use crate::evaluate::scene::{Depth, MAX_DEPTH, Named};
+use crate::published::prefilter::{Prefiltered, Space};
+use crate::published::rules::{Family, astm_interval};
+
+/// A way of computing a colour with few numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Candidate {
+    /// speclab's rule of M wavelengths fitted to the light.
+    Fitted(usize),
+    /// A published rule of M wavelengths.
+    Published(Family, usize),
+    /// Spectral prefiltering in a space (three numbers).
+    Prefiltered(Space),
+}
+
+impl Candidate {
+    /// The numbers carried per spectrum: M, or 3 for prefiltering.
+    #[must_use]
+    pub fn m(self) -> usize {
+        match self {
+            Candidate::Fitted(m) | Candidate::Published(_, m) => m,
+            Candidate::Prefiltered(_) => 3,
+        }
+    }
+
+    /// Its colour of light × `surface`^depth, ready for one light.
+    fn prepare(self, light: &Named) -> Result<Prepared, StudyError> {
+        Ok(match self {
+            Candidate::Fitted(m) => Prepared::Fitted(light.rules()?.rule(m)?.clone()),
+            Candidate::Published(family, m) => Prepared::Published(family.rule(&light.spectrum, m)?),
+            Candidate::Prefiltered(space) => {
+                Prepared::Prefiltered(Prefiltered::new(space, reference::white(&light.spectrum))?)
+            }
+        })
+    }
+}
+
+impl fmt::Display for Candidate {
+    /// `fitted`, `astm` (with its interval: `astm-10nm`), `borges`,
+    /// `meyer`, `wallis`, `prefilter-xyz` / `-srgb` / `-sharp`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Candidate::Fitted(_) => f.write_str("fitted"),
+            Candidate::Published(Family::Astm, m) => write!(f, "astm-{}nm", astm_interval(*m)),
+            Candidate::Published(family, _) => family.fmt(f),
+            Candidate::Prefiltered(space) => write!(f, "prefilter-{space}"),
+        }
+    }
+}
+
+/// A candidate ready for one light.
+enum Prepared {
+    Fitted(Rule),
+    Published(Rule),
+    Prefiltered(Prefiltered),
+}
+
+impl Prepared {
+    fn xyz(&self, light: &Named, surface: &TabulatedSpectrum, depth: Depth) -> Xyz {
+        let s: &dyn Spectrum = surface;
+        let mut factors = [s; 1 + MAX_DEPTH];
+        factors[0] = &light.spectrum;
+        let factors = &factors[..=depth.get()];
+        match self {
+            Prepared::Fitted(rule) => rule.xyz_of_product(factors),
+            Prepared::Published(rule) => rule.xyz_of_product(&factors[1..]),
+            Prepared::Prefiltered(p) => p.xyz(&vec![p.surface(light.exact(surface)); depth.get()]),
+        }
+    }
+}
+
+/// One candidate over every pair.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// The candidate.
+    pub candidate: Candidate,
+    /// The path depth.
+    pub depth: usize,
+    /// The largest ΔE00 over the pairs.
+    pub worst: f64,
+    /// The mean ΔE00.
+    pub mean: f64,
+    /// Pairs with ΔE00 above 1.
+    pub above_one: usize,
+    /// Pairs evaluated (lights where the candidate exists × surfaces).
+    pub pairs: usize,
+    /// Each light's worst ΔE00, in the lights' order (NaN where the
+    /// candidate does not exist for the light: a Borges rule without real
+    /// nodes).
+    pub per_light: Vec<f64>,
+}
+
+/// Each candidate over `lights` × `surfaces` at `depth` (an error for an
+/// empty scene; a light no candidate can see is an error too).
+pub fn table(
+    lights: &[Named],
+    surfaces: &[Named],
+    candidates: &[Candidate],
+    depth: Depth,
+) -> Result<Vec<Row>, StudyError> {
+    if lights.is_empty() || surfaces.is_empty() {
+        return Err(StudyError::EmptyScene);
+    }
+    let per_light: Vec<Vec<Option<Vec<f64>>>> = lights
+        .par_iter()
+        .map(|light| {
+            let white = reference::white(&light.spectrum);
+            let exact: Vec<Xyz> = surfaces.iter().map(|s| light.exact_at(depth, &s.spectrum)).collect();
+            candidates
+                .iter()
+                .map(|c| match c.prepare(light) {
+                    Ok(p) => Ok(Some(
+                        surfaces
+                            .iter()
+                            .zip(&exact)
+                            .map(|(s, &e)| perceptual::delta_e00(p.xyz(light, &s.spectrum, depth), e, white))
+                            .collect(),
+                    )),
+                    Err(StudyError::Spectra(speclab::Error::NoMass))
+                        if matches!(c, Candidate::Published(Family::Borges, _)) =>
+                    {
+                        Ok(None)
+                    }
+                    Err(e) => Err(e),
+                })
+                .collect::<Result<Vec<_>, StudyError>>()
+        })
+        .collect::<Result<_, _>>()?;
+    Ok(candidates
+        .iter()
+        .enumerate()
+        .map(|(i, &candidate)| {
+            let all: Vec<f64> = per_light.iter().filter_map(|l| l[i].as_ref()).flatten().copied().collect();
+            let worst_of =
+                |l: &Option<Vec<f64>>| l.as_ref().map_or(f64::NAN, |d| d.iter().copied().fold(0.0, f64::max));
+            Row {
+                candidate,
+                depth: depth.get(),
+                worst: all.iter().copied().fold(0.0, f64::max),
+                mean: all.iter().sum::<f64>() / all.len().max(1) as f64,
+                above_one: all.iter().filter(|&&d| d > 1.0).count(),
+                pairs: all.len(),
+                per_light: per_light.iter().map(|l| worst_of(&l[i])).collect(),
+            }
+        })
+        .collect())
+}

@@ -1,0 +1,41 @@
+//! Small dense linear systems, by Gaussian elimination with partial
+//! pivoting: the node polynomial of Borges's rules and interpolatory
+//! weights (at most 64 unknowns).
+//!
+//! ```
+//! use speclab_study::published::solve::solve;
+//! let x = solve(vec![vec![2.0, 1.0], vec![1.0, 3.0]], vec![3.0, 5.0]).unwrap();
+//! assert!((x[0] - 0.8).abs() < 1e-15 && (x[1] - 1.4).abs() < 1e-15);
+//! assert!(solve(vec![vec![1.0, 2.0], vec![2.0, 4.0]], vec![1.0, 2.0]).is_none());
+//! ```
+
+/// `x` with `a·x = b` (`a` given by rows, square, as long as `b`); `None`
+/// for a singular (or numerically singular) or mis-shaped system.
+#[must_use]
+pub fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
+    let n = b.len();
+    if a.len() != n || a.iter().any(|row| row.len() != n) {
+        return None;
+    }
+    let scale = a.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
+    for k in 0..n {
+        let pivot = (k..n).max_by(|&i, &j| a[i][k].abs().total_cmp(&a[j][k].abs()))?;
+        if a[pivot][k].is_nan() || a[pivot][k].abs() <= 1e-13 * scale {
+            return None;
+        }
+        a.swap(k, pivot);
+        b.swap(k, pivot);
+        for i in k + 1..n {
+            let f = a[i][k] / a[k][k];
+            let (top, rest) = a.split_at_mut(i);
+            rest[0].iter_mut().zip(&top[k]).skip(k).for_each(|(x, p)| *x -= f * p);
+            b[i] -= f * b[k];
+        }
+    }
+    let mut x = vec![0.0; n];
+    for k in (0..n).rev() {
+        let tail: f64 = (k + 1..n).map(|j| a[k][j] * x[j]).sum();
+        x[k] = (b[k] - tail) / a[k][k];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}

@@ -1,0 +1,152 @@
+//! The published rules against what they promise: ASTM's weights against
+//! a published E308 table and against Appendix 2, each quadrature's degree
+//! of exactness, prefiltering exact at one bounce.
+
+use speclab::Interpolation;
+use speclab::data::{Light, lights, patches};
+use speclab::sampling::{PreparedLight, reference};
+use speclab::spectrum::Spectrum;
+use speclab::spectrum::observer::xyz_bar;
+use speclab_study::evaluate::scene::{self, Depth, Named};
+use speclab_study::published::compare::{self, Candidate};
+use speclab_study::published::gauss::{Measure, to_t};
+use speclab_study::published::prefilter::Space;
+use speclab_study::published::rules::{Family, astm_interval};
+
+/// ASTM E308-15's weighting factors for CIE D65, the 1931 observer, 20 nm
+/// (360–780 nm rows; 380 nm first here), as reproduced by colour-science's
+/// tests (`TWF_D65_CIE_1931_2_20`).
+const E308_D65_2_20: [[f64; 3]; 18] = [
+    [-0.008, -0.000, -0.039],
+    [0.179, 0.002, 0.829],
+    [2.542, 0.071, 12.203],
+    [6.670, 0.453, 33.637],
+    [6.333, 1.316, 36.334],
+    [2.213, 2.933, 18.278],
+    [0.052, 6.866, 5.543],
+    [1.348, 14.106, 1.611],
+    [5.767, 18.981, 0.382],
+    [11.301, 18.863, 0.068],
+    [16.256, 15.455, 0.025],
+    [17.933, 10.699, 0.013],
+    [14.020, 6.277, 0.003],
+    [7.057, 2.743, 0.000],
+    [2.527, 0.927, -0.000],
+    [0.670, 0.242, -0.000],
+    [0.140, 0.050, 0.000],
+    [0.035, 0.013, 0.000],
+];
+
+#[test]
+fn astm_weights_at_20_nm_reproduce_the_e308_table_away_from_the_ends() {
+    // Normalised as the table (k = 100/Y of the white). The ends differ:
+    // the table spans 360–830 nm and folds what lies beyond its rows into
+    // them, speclab integrates 380–730 nm.
+    let rule = Family::Astm.rule(&lights::CIE_D65, 18).unwrap();
+    assert_eq!((astm_interval(18), rule.lambda()[0], rule.lambda()[17]), (20.0, 380.0, 720.0));
+    let k = 100.0 / reference::white(&lights::CIE_D65).y;
+    let (w, _) = rule.weights();
+    for (i, row) in E308_D65_2_20.iter().enumerate().filter(|(i, _)| (3..=14).contains(i)) {
+        for c in 0..3 {
+            let ours = w[c][i] * k;
+            assert!(
+                (ours - row[c]).abs() <= 0.01,
+                "{} nm, channel {c}: {ours} against {}",
+                380 + 20 * i,
+                row[c]
+            );
+        }
+    }
+}
+
+#[test]
+fn astm_at_10_nm_is_appendix_2_for_its_10_nm_patches() {
+    for light in Light::APPENDIX {
+        let rule = Family::Astm.rule(light.spectrum(), 36).unwrap();
+        for (_, patch) in patches::ALL {
+            let (ours, exact) = (rule.xyz_of_product(&[patch]), reference::xyz(light.spectrum(), patch));
+            assert!((ours.y - exact.y).abs() <= 1e-9 * exact.y && (ours.z - exact.z).abs() <= 1e-9 * exact.z);
+        }
+    }
+    let p = PreparedLight::for_grid(&lights::F11, patches::G4.lambda(), Interpolation::Cubic).unwrap();
+    assert_eq!(Family::Astm.rule(&lights::F11, 36).unwrap().weights().0, p.weights());
+}
+
+/// `∫ f·w꜀` and a rule's `Σ w꜀ᵢ·f(λᵢ)` for channel `c` of `light`.
+fn both(family: Family, light: &dyn Spectrum, m: usize, c: usize, f: impl Fn(f64) -> f64) -> (f64, f64) {
+    let w = Measure::new(|l| light.eval(l) * xyz_bar(l)[c]);
+    let exact = w.integrate(&w.points().iter().map(|&t| f(t)).collect::<Vec<_>>());
+    let rule = family.rule(light, m).unwrap();
+    let (weights, _) = rule.weights();
+    let sum = rule.lambda().iter().zip(&weights[c]).map(|(&l, w)| w * f(to_t(l))).sum();
+    (exact, sum)
+}
+
+#[test]
+fn each_quadrature_is_exact_to_its_degree() {
+    let light: &dyn Spectrum = &lights::D65;
+    let power = |k: i32| move |t: f64| (t + 0.3).powi(k);
+    // Wallis: a 3-point Gauss rule per channel, degree 5. Borges: 9 shared
+    // nodes (degree 8 for any channel) and 3 more degrees for each.
+    for (family, m, c, degree) in
+        [(Family::Wallis, 9, 1, 5), (Family::Borges, 9, 1, 11), (Family::Borges, 9, 2, 11)]
+    {
+        for k in [degree - 1, degree] {
+            let (exact, sum) = both(family, light, m, c, power(k));
+            assert!((sum - exact).abs() <= 1e-9 * exact.abs(), "{family} degree {k}: {sum} against {exact}");
+        }
+        let (exact, sum) = both(family, light, m, c, power(degree + 1));
+        assert!((sum - exact).abs() > 1e-7 * exact.abs(), "{family}: exact beyond its degree?");
+    }
+    // Meyer's rule is Gauss for L·s̄ (s̄ = x̄ + ȳ + z̄), its Y weights
+    // carrying ȳ/s̄: Σ w_Yᵢ·g(tᵢ)·s̄/ȳ(λᵢ) is ∫ g·L·s̄ for g of degree 2·6 − 1.
+    let sum = Measure::new(|l| light.eval(l) * xyz_bar(l).iter().sum::<f64>());
+    let rule = Family::Meyer.rule(light, 6).unwrap();
+    for k in [10, 11, 12] {
+        let g = |t: f64| (t + 0.3).powi(k);
+        let exact = sum.integrate(&sum.points().iter().map(|&t| g(t)).collect::<Vec<_>>());
+        let (w, _) = rule.weights();
+        let ours: f64 = rule
+            .lambda()
+            .iter()
+            .zip(&w[1])
+            .map(|(&l, w)| w * g(to_t(l)) * xyz_bar(l).iter().sum::<f64>() / xyz_bar(l)[1])
+            .sum();
+        let close = (ours - exact).abs() <= 1e-9 * exact.abs();
+        assert_eq!(close, k < 12, "meyer degree {k}: {ours} against {exact}");
+    }
+}
+
+#[test]
+fn prefiltering_is_exact_at_one_bounce_and_not_at_two() {
+    let (lights, surfaces) = (scene::builtin_lights(), scene::builtin_surfaces());
+    let candidates = Space::ALL.map(Candidate::Prefiltered);
+    for row in compare::table(&lights, &surfaces, &candidates, Depth::ONE).unwrap() {
+        assert!(row.worst < 1e-9 && row.pairs == 18, "{}: {}", row.candidate, row.worst);
+    }
+    let two = Depth::new(2).unwrap();
+    for row in compare::table(&lights, &surfaces, &candidates, two).unwrap() {
+        assert!(row.worst > 0.05, "{}: {}", row.candidate, row.worst);
+    }
+}
+
+#[test]
+fn the_table_counts_pairs_and_reads_each_lights_worst() {
+    let lights = [Named::from(Light::F11), Named::from(Light::D65)];
+    let surfaces = scene::builtin_surfaces();
+    let rows = compare::table(
+        &lights,
+        &surfaces,
+        &[Candidate::Fitted(6), Candidate::Published(Family::Meyer, 6)],
+        Depth::ONE,
+    )
+    .unwrap();
+    for row in &rows {
+        assert_eq!((row.pairs, row.per_light.len()), (12, 2));
+        assert_eq!(row.worst, row.per_light.iter().copied().fold(0.0, f64::max));
+        assert!(row.mean > 0.0 && row.mean < row.worst && row.above_one <= 12);
+    }
+    assert_eq!(rows[1].candidate.to_string(), "meyer");
+    assert!(compare::table(&[], &surfaces, &[Candidate::Fitted(6)], Depth::ONE).is_err());
+    assert!(Family::Astm.rule(&lights::D65, 3).is_err() && Family::Wallis.rule(&lights::D65, 65).is_err());
+}
