@@ -18,13 +18,14 @@ use speclab::data::{Light, patches};
 use speclab_cli::args::{self, fail, finish};
 use speclab_cli::report;
 use speclab_study::StudyError;
+use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::scene::{Choice, Named};
 use speclab_study::evaluate::viewing::Viewing;
 use speclab_study::experiments::grid::GridOptions;
 use speclab_study::experiments::texture::{self, TextureOptions};
 
 const USAGE: &str = "\
-usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture]
+usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture] [--method NAME]...
             [--light NAME | --light-file PATH]... [--surface NAME | --surface-file PATH]...
             [--normalize none|power|luminance] [--white-balance]
             [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
@@ -35,6 +36,9 @@ usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture]
   --seed S             base seed of the random methods (default 1)
   --depth D            surfaces per path, 1 to 4: every method and the reference on
                        light × surface^D (default 1)
+  --method NAME        also a published method, after the default six: astm, borges, meyer,
+                       wallis (M wavelengths, as --m), prefilter-xyz, prefilter-srgb,
+                       prefilter-sharp (three numbers per surface); repeat for several
   --csv                print light,surface,method,samples,x,y,z,r,g,b,pdf,strata,evals rows
   --texture            instead, what an RGB texture of each surface costs in colour under each
                        light (its colour under D65, upsampled), beside hero (n, jittered) and
@@ -53,6 +57,7 @@ usage: grid [--n N] [--m M] [--seed S] [--depth D] [--csv] [--texture]
 
 struct Args {
     grid: GridOptions,
+    extra: Vec<Method>,
     csv: bool,
     texture: bool,
     lights: Vec<Choice>,
@@ -66,6 +71,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
     let names = |names: &mut dyn Iterator<Item = &str>| names.map(|n| Choice::Name(n.to_string())).collect();
     let mut args = Args {
         grid: GridOptions::default(),
+        extra: Vec::new(),
         csv: false,
         texture: false,
         lights: names(&mut Light::APPENDIX.iter().map(|l| l.name())),
@@ -81,6 +87,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("m") => args.grid.m = parser.value()?.parse_with(args::buckets)?,
             Long("seed") => args.grid.seed = parser.value()?.parse()?,
             Long("depth") => args.grid.depth = parser.value()?.parse()?,
+            Long("method") => args.extra.push(parser.value()?.parse()?),
             Long("csv") => args.csv = true,
             Long("texture") => args.texture = true,
             Long("light") => {
@@ -147,7 +154,8 @@ fn main() -> ExitCode {
             Err(e) => fail("grid", e),
         };
     }
-    let rows = match args.grid.rows(&lights, &surfaces) {
+    let methods: Vec<Method> = Method::ALL.iter().chain(&args.extra).copied().collect();
+    let rows = match args.grid.rows_of(&lights, &surfaces, &methods) {
         Ok(rows) => rows,
         Err(e) => return fail("grid", e),
     };

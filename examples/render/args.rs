@@ -10,7 +10,7 @@ use speclab_study::render::{Options, Way};
 
 pub const USAGE: &str = "\
 usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PATH]...
-              [--wavelengths hero|fitted|rgb] [--m M]
+              [--wavelengths hero|fitted|rgb|prefilter] [--m M]
               [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
               [--bins B | --exact-pdf] [--spectra exact|dense] [--precision f64|f32]
               [--exact] [--survey [--csv PATH] [--strip PATH]] [--reference N] [--threads T] [--out PATH]
@@ -21,7 +21,9 @@ usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PA
                      ceiling squares (at most two)
   --wavelengths W    how colour is carried: hero (default: four wavelengths per path, from --pdf),
                      fitted (a rule of --m wavelengths fitted to all the scene's lights, every
-                     spectrum evaluated at them once), rgb (linear sRGB triples: albedos under D65)
+                     spectrum evaluated at them once), rgb (linear sRGB triples: albedos under D65),
+                     prefilter (three numbers per surface prefiltered under the scene's lights,
+                     in sharpened RGB: Ward and Eydelberg-Vileshin 2002)
   --m M              the fitted rule's wavelengths, 1 to 64 (default 10)
   --pdf P            how hero wavelengths are drawn (default uniform)
   --strata S         how a pixel's primary numbers are spread (default jitter)
@@ -31,7 +33,7 @@ usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PA
   --precision P      the per-sample values' precision, f64 (default) or f32
   --exact            also integrate each path exactly over wavelength and compare pixel by pixel
                      (ΔE00 in CIELAB of the displayed white)
-  --survey           every way (rgb, hero uniform and light pdf at 4 to 64 paths per pixel,
+  --survey           every way (rgb, prefilter, hero uniform and light pdf at 4 to 64 paths per pixel,
                      fitted M = 4 to 16) against the exact image of its own paths: a table;
                      --csv writes its rows, --strip a PNG of rgb | fitted | hero | exact
   --reference N      also render N paths per pixel and print the RMS ΔE*ab against it

@@ -1,9 +1,10 @@
 //! A small path tracer over speclab's renderer API (the study's
 //! `render`): a box of ColorChecker walls and spheres with an RGB-textured
 //! back wall, lit by one or two lights in the ceiling, with colour carried
-//! three ways (`--wavelengths`): hero wavelengths (K = 4, from a chosen
+//! four ways (`--wavelengths`): hero wavelengths (K = 4, from a chosen
 //! pdf and strata), a rule of M wavelengths fitted to the scene's lights,
-//! or RGB triples. It renders twice, with colour and grey (the same paths,
+//! RGB triples, or spectral prefiltering (three numbers per surface
+//! computed under the scene's lights). It renders twice, with colour and grey (the same paths,
 //! one number per surface), and prints the time per path vertex of each:
 //! the difference is the colour's share. `--exact` integrates each of the
 //! same paths exactly over wavelength and compares pixel by pixel;

@@ -27,6 +27,7 @@ pub fn report(a: &Args, setup: &Setup, timed: &Timed) {
     let precision = if o.single { "f32" } else { "f64" };
     let how = match o.way {
         Way::Rgb => "rgb triples".to_string(),
+        Way::Prefilter => "spectral prefiltering in sharpened RGB (Ward 2002)".to_string(),
         Way::Fitted => format!("a fitted rule of M = {}, {precision}", o.m),
         Way::Hero => format!(
             "hero, pdf {}{}, strata {}, {} {precision} spectra",

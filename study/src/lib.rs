@@ -6,7 +6,7 @@
 //! and numbers; the programs (`cargo run --release --example grid` and its
 //! siblings, with `speclab-cli`) show them.
 //!
-//! In four folders, by job:
+//! In five folders, by job:
 //!
 //! - [`evaluate`]: scenes, methods and trials: how far one method lands
 //!   from the exact colour ([`evaluate::Method`], [`evaluate::Named`],
@@ -15,8 +15,12 @@
 //!   detail, the fixed rules by M and depth, RGB textures, swatches;
 //! - [`planning`]: the measured cost of an estimate, speed against
 //!   accuracy, and the cheapest configuration within a ΔE00 budget;
-//! - [`render`]: a small path tracer carrying colour three ways (hero,
-//!   fitted, RGB), the exact image of its own paths, and the survey.
+//! - [`render`]: a small path tracer carrying colour four ways (hero,
+//!   fitted, RGB, prefiltered RGB), the exact image of its own paths, and
+//!   the survey;
+//! - [`published`]: the published few-wavelength rules (ASTM E308/E2022,
+//!   Wallis, Meyer, Borges) and spectral prefiltering, on 53 held-apart
+//!   measured reflectances.
 //!
 //! Its functions return a [`StudyError`]: the library's `Error` or what
 //! only a study asks (an empty scene, a budget). Work over many cells or

@@ -9,10 +9,11 @@ use plotters::prelude::*;
 use speclab::sampling::buckets::BucketRule;
 use speclab_study::evaluate::method::Method;
 use speclab_study::planning::chart::Point;
+use speclab_study::published::rules::Family;
 
 /// Panel and legend sizes, px.
 const PANEL: (u32, u32) = (620, 560);
-const LEGEND_HEIGHT: u32 = 110;
+const LEGEND_HEIGHT: u32 = 140;
 const TITLE_HEIGHT: u32 = 50;
 
 /// A curve's look: colour, whether its markers are triangles, and its label.
@@ -24,7 +25,7 @@ struct Look {
 
 /// Colours told apart by most readers (Tableau 10, then darker extras), in
 /// the order of the curves; the reference is black.
-const PALETTE: [RGBColor; 12] = [
+const PALETTE: [RGBColor; 15] = [
     RGBColor(127, 127, 127),
     RGBColor(31, 119, 180),
     RGBColor(23, 190, 207),
@@ -37,6 +38,9 @@ const PALETTE: [RGBColor; 12] = [
     RGBColor(188, 189, 34),
     RGBColor(0, 0, 128),
     RGBColor(128, 0, 0),
+    RGBColor(0, 128, 128),
+    RGBColor(204, 153, 0),
+    RGBColor(64, 64, 64),
 ];
 
 /// The look of the `index`-th curve, `method`.
@@ -50,6 +54,11 @@ fn look(method: Method, index: usize) -> Look {
         Method::Buckets { rule: BucketRule::Center } => "regular, center of M buckets".to_string(),
         Method::Buckets { rule: BucketRule::BoxAverage } => "regular, box mean of M buckets".to_string(),
         Method::Fitted => "fitted: M wavelengths and weights fitted to the light".to_string(),
+        Method::Published { family: Family::Astm } => {
+            "astm: E308/E2022 weights every ⌊350/(M − 1)⌋ nm".to_string()
+        }
+        Method::Published { family } => format!("{family}: a published rule of M wavelengths"),
+        Method::Prefiltered { space } => format!("prefilter-{space}: three numbers per surface (Ward 2002)"),
         m => format!("{m} {}", m.sampling().unwrap_or_default()),
     };
     let triangle = method.is_fixed();
@@ -73,7 +82,8 @@ fn methods<'a>(points: impl IntoIterator<Item = &'a Point>) -> Vec<Method> {
 fn labelled(method: Method, n: usize, last: usize) -> bool {
     match method {
         Method::Reference => false,
-        Method::Buckets { .. } | Method::Fitted => n == 32 || n == last,
+        Method::Buckets { .. } | Method::Fitted | Method::Published { .. } => n == 32 || n == last,
+        Method::Prefiltered { .. } => true,
         _ => n == last,
     }
 }
@@ -116,6 +126,9 @@ pub fn svg(points: &[Point], trials: usize) -> Result<String, Failure> {
     Ok(text)
 }
 
+/// The smallest ΔE00 the y axis shows.
+const FLOOR: f64 = 1e-4;
+
 /// The x (ns) and y (ΔE00) ranges shared by every panel: whole decades.
 fn ranges(points: &[Point]) -> ((f64, f64), (f64, f64)) {
     let decade_below = |v: f64| 10f64.powf(v.log10().floor());
@@ -123,9 +136,10 @@ fn ranges(points: &[Point]) -> ((f64, f64), (f64, f64)) {
     let xs = points.iter().map(|p| p.cost.per_estimate_ns).filter(|x| *x > 0.0);
     let (x0, x1) = xs.fold((f64::INFINITY, 0.0f64), |(a, b), x| (a.min(x), b.max(x)));
     let y1 = points.iter().map(|p| p.worst_rms).fold(1.0f64, f64::max);
-    // The smallest error above 0 sets the floor; the reference (exactly 0)
-    // is drawn on it.
-    let y0 = points.iter().map(|p| p.worst_rms).filter(|y| *y > 0.0).fold(0.1f64, f64::min);
+    // The smallest error above 0 sets the floor, but not below FLOOR; the
+    // reference (exactly 0) and what is exact to rounding (prefiltering at
+    // one bounce, ASTM on tables of its own step) are drawn on it.
+    let y0 = points.iter().map(|p| p.worst_rms).filter(|y| *y > 0.0).fold(0.1f64, f64::min).max(FLOOR);
     let x = if x0 < x1 { (decade_below(x0), decade_above(x1)) } else { (1.0, 1e6) };
     (x, (decade_below(y0), decade_above(y1)))
 }
@@ -226,8 +240,9 @@ fn draw_legend(area: &Area, order: &[Method]) -> Result<(), Failure> {
     }
     let note = "points: n = 1, 2, 4, … 1024 samples (random: 1 wavelength each, hero: 4), M = 1 … 64 buckets or wavelengths; \
                 ring: n = 16 or M = 16. Thick grey: the Pareto front (nothing else is both faster and more \
-                accurate). Dashed: budgets.";
-    area.draw(&Text::new(note, (20, 14 + 3 * 24), font)).map_err(|e| e.to_string())
+                accurate). Dashed: budgets. Errors below 1e-4 (exact) are drawn on the axis.";
+    let rows = order.len().div_ceil(columns) as i32;
+    area.draw(&Text::new(note, (20, 14 + rows * 24), font)).map_err(|e| e.to_string())
 }
 
 /// A tick label: 1, 10, 100, 1k, 10k, 1M; 0.1, 0.01.

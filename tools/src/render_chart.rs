@@ -21,7 +21,7 @@ fn curve_of(row: &Row) -> &str {
 fn label(row: &Row) -> String {
     match row.way.split_once(" M=") {
         Some((_, m)) => format!("M{m}"),
-        None if row.way == "rgb" => "rgb".into(),
+        None if row.way == "rgb" || row.way == "prefilter" => row.way.clone(),
         None => format!("{}", row.spp),
     }
 }
@@ -30,8 +30,9 @@ fn label(row: &Row) -> String {
 const PANEL: (u32, u32) = (520, 470);
 
 /// The curves' colours, in order of first appearance.
-const PALETTE: [RGBColor; 5] = [
+const PALETTE: [RGBColor; 6] = [
     RGBColor(0, 0, 0),
+    RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),

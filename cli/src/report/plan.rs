@@ -19,8 +19,10 @@ pub fn plan_text(
     writeln!(out, "speclab plan: the cheapest sampling whose RMS ΔE00 stays within {budget} in every cell")?;
     let cells = lights.len() * surfaces.len();
     writeln!(out, "scene: lights {}; surfaces {} ({cells} cells)", names(lights), names(surfaces))?;
-    let bias = if request.allow_bias {
-        "allowed (regular buckets, and rules fitted to the scene's lights, are candidates)"
+    let bias = if request.allow_bias && lights.len() == 1 {
+        "allowed (regular buckets, rules fitted to the scene's lights, published rules and spectral prefiltering are candidates)"
+    } else if request.allow_bias {
+        "allowed (regular buckets and rules fitted to the scene's lights are candidates; published rules and prefiltering are built for one light)"
     } else {
         "excluded (Monte Carlo only: unbiased)"
     };

@@ -8,7 +8,12 @@
 //! | `regular-center` | M bucket centers | M |
 //! | `regular-box` | M bucket means | M |
 //! | `fitted` | M wavelengths fitted to the light ([`Rule::fit`]) | M |
+//! | `astm`, `borges`, `meyer`, `wallis` | a published rule of M wavelengths for the light ([`Family`]) | M |
+//! | `prefilter-xyz`, `-srgb`, `-sharp` | three numbers per surface under the light ([`Space`]) | (ignored; reported as 3) |
 //!
+//! The published rules and prefiltering ([`crate::published`]) are not in
+//! [`Method::ALL`] (the grid's default columns): [`Method::PUBLISHED`]
+//! lists them, and names parse from either list.
 //! Random and hero are one method, of width 1 or K, and draw their
 //! wavelengths as their [`Sampling`] says (a pdf and a strata; uniform and
 //! independent by default, as the assignment), through the one dispatch
@@ -52,11 +57,14 @@ use speclab::sampling::choice::{ChosenPdf, Sampling};
 use speclab::sampling::fitted::FittedRules;
 use speclab::sampling::hero::{self, USUAL_K};
 use speclab::sampling::pdf::WavelengthPdf;
+use speclab::sampling::reference;
 use speclab::sampling::rule::{MAX_M, Rule};
 use speclab::spectrum::{Spectrum, TabulatedSpectrum};
 
 use crate::StudyError;
 use crate::evaluate::scene::{Depth, MAX_DEPTH, Named};
+use crate::published::prefilter::{Prefiltered, Space};
+use crate::published::rules::Family;
 
 /// How wavelengths are chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -78,6 +86,17 @@ pub enum Method {
     },
     /// M wavelengths and weights fitted to the light ([`Rule::fit`]).
     Fitted,
+    /// A published rule of M wavelengths built for the light, its weights
+    /// including the light ([`Family::rule`]).
+    Published {
+        /// ASTM, Borges, Meyer or Wallis.
+        family: Family,
+    },
+    /// Spectral prefiltering: three numbers per surface ([`Prefiltered`]).
+    Prefiltered {
+        /// The space the numbers are kept in.
+        space: Space,
+    },
 }
 
 impl Method {
@@ -104,11 +123,47 @@ impl Method {
     /// The names of [`Method::ALL`], in its order.
     pub const NAMES: [&str; 6] = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];
 
-    /// True for the methods with a fixed set of M wavelengths (buckets and
-    /// fitted rules): deterministic and biased.
+    /// The published rules and spectral prefiltering, in that order.
+    pub const PUBLISHED: [Method; 7] = [
+        Method::Published { family: Family::Astm },
+        Method::Published { family: Family::Borges },
+        Method::Published { family: Family::Meyer },
+        Method::Published { family: Family::Wallis },
+        Method::Prefiltered { space: Space::Xyz },
+        Method::Prefiltered { space: Space::Srgb },
+        Method::Prefiltered { space: Space::Sharp },
+    ];
+
+    /// The names of [`Method::PUBLISHED`], in its order.
+    pub const PUBLISHED_NAMES: [&str; 7] =
+        ["astm", "borges", "meyer", "wallis", "prefilter-xyz", "prefilter-srgb", "prefilter-sharp"];
+
+    /// Every name a method parses from: [`Method::NAMES`], then
+    /// [`Method::PUBLISHED_NAMES`].
+    pub const EVERY_NAME: [&str; 13] = [
+        "reference",
+        "random",
+        "hero",
+        "regular-center",
+        "regular-box",
+        "fitted",
+        "astm",
+        "borges",
+        "meyer",
+        "wallis",
+        "prefilter-xyz",
+        "prefilter-srgb",
+        "prefilter-sharp",
+    ];
+
+    /// True for the deterministic, biased methods: a fixed set of M
+    /// wavelengths (buckets, fitted and published rules) or prefiltering.
     #[must_use]
     pub fn is_fixed(self) -> bool {
-        matches!(self, Method::Buckets { .. } | Method::Fitted)
+        matches!(
+            self,
+            Method::Buckets { .. } | Method::Fitted | Method::Published { .. } | Method::Prefiltered { .. }
+        )
     }
 
     /// The same method drawing wavelengths as `sampling` says (no change
@@ -139,7 +194,11 @@ impl Method {
     /// The sample count reported for a run with `samples`: 0 for the reference.
     #[must_use]
     pub fn reported_samples(self, samples: NonZeroUsize) -> usize {
-        if self == Method::Reference { 0 } else { samples.get() }
+        match self {
+            Method::Reference => 0,
+            Method::Prefiltered { .. } => 3,
+            _ => samples.get(),
+        }
     }
 
     /// Wavelengths evaluated per estimate with `samples` samples or buckets
@@ -154,7 +213,8 @@ impl Method {
 
     /// The counts a sequence studies: powers of two up to `max_n` for
     /// random and hero, every M up to [`MAX_M`] for buckets and fitted
-    /// rules, none for the reference.
+    /// rules (from the family's smallest for a published rule), one for
+    /// prefiltering, none for the reference.
     #[must_use]
     pub fn counts(self, max_n: usize) -> Vec<usize> {
         match self {
@@ -162,6 +222,8 @@ impl Method {
                 .take_while(|&n| n <= max_n)
                 .collect(),
             Method::Buckets { .. } | Method::Fitted => (1..=MAX_M).collect(),
+            Method::Published { family } => (family.min_m()..=MAX_M).collect(),
+            Method::Prefiltered { .. } => vec![3],
             Method::Reference => Vec::new(),
         }
     }
@@ -192,7 +254,8 @@ impl Method {
 impl fmt::Display for Method {
     /// The name used in tables and CSV: `reference`, `random` (hero of
     /// width 1), `hero` (any other width; the sampling has columns of its
-    /// own), `regular-center`, `regular-box`, `fitted`.
+    /// own), `regular-center`, `regular-box`, `fitted`, and the
+    /// [`Method::PUBLISHED_NAMES`].
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
             Method::Reference => Method::NAMES[0],
@@ -201,6 +264,8 @@ impl fmt::Display for Method {
             Method::Buckets { rule: BucketRule::Center } => Method::NAMES[3],
             Method::Buckets { rule: BucketRule::BoxAverage } => Method::NAMES[4],
             Method::Fitted => Method::NAMES[5],
+            Method::Published { family } => return family.fmt(f),
+            Method::Prefiltered { space } => return write!(f, "prefilter-{space}"),
         })
     }
 }
@@ -209,10 +274,11 @@ impl FromStr for Method {
     type Err = Error;
     /// The method with this name (any case), sampling uniform and independent.
     fn from_str(name: &str) -> Result<Method, Error> {
-        let found = Method::NAMES.iter().position(|n| n.eq_ignore_ascii_case(name));
-        found.map(|i| Method::ALL[i]).ok_or_else(|| Error::UnknownName {
+        let every = Method::ALL.iter().chain(&Method::PUBLISHED);
+        let found = Method::EVERY_NAME.iter().zip(every).find(|(n, _)| n.eq_ignore_ascii_case(name));
+        found.map(|(_, &m)| m).ok_or_else(|| Error::UnknownName {
             what: "a method",
-            expected: &Method::NAMES,
+            expected: &Method::EVERY_NAME,
             found: name.to_string(),
         })
     }
@@ -286,6 +352,12 @@ impl Estimator<'_> {
             }
             Method::Buckets { rule } => Rule::buckets(m, rule)?.xyz_of_product(factors),
             Method::Fitted => self.rule(m)?.ok_or(Error::NoMass)?.xyz_of_product(factors),
+            // The rule's weights include the light: the surfaces alone.
+            Method::Published { family } => family.rule(light, m)?.xyz_of_product(&factors[1..]),
+            Method::Prefiltered { space } => {
+                let p = Prefiltered::new(space, reference::white(light))?;
+                p.xyz(&[p.surface(self.light.exact(surface)); MAX_DEPTH][..depth.get()])
+            }
         })
     }
 

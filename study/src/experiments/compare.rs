@@ -2,7 +2,12 @@
 //! reference beside every technique, with sRGB, ΔE00 of one estimate and,
 //! over many trials, RMS ΔE00; and last, the surface as an RGB texture
 //! would store it (its colour under D65, upsampled), lit by the light. With
-//! a depth above 1, every line is light × surface^depth.
+//! a depth above 1, every line is light × surface^depth. The published
+//! rules (ASTM, Borges, Meyer, Wallis at the same M) and spectral
+//! prefiltering in three spaces follow the fitted rule
+//! ([`crate::published`]); a rule that does not exist for the light (a
+//! Borges rule without real nodes, a count below the family's smallest)
+//! has no line.
 //!
 //! ```
 //! use speclab_study::experiments::compare::{self, CompareOptions};
@@ -13,9 +18,12 @@
 //! let lines = compare::compare(&light, &patch, &CompareOptions::default())?;
 //! assert_eq!(lines[0].label, "reference");
 //! assert_eq!(lines[0].de00, 0.0);
-//! assert_eq!(lines.len(), 7);
+//! assert_eq!(lines.len(), 14);
 //! assert_eq!(lines[5].label, "fitted M=16");
-//! assert_eq!(lines[6].label, "rgb texture (D65)");
+//! assert_eq!(lines[6].label, "astm M=16");
+//! assert_eq!(lines[12].label, "prefilter-sharp");
+//! assert!(lines[12].de00 < 1e-6); // exact at one bounce
+//! assert_eq!(lines[13].label, "rgb texture (D65)");
 //! # Ok::<(), speclab_study::StudyError>(())
 //! ```
 
@@ -31,6 +39,7 @@ use speclab::color::LinearSrgb;
 use speclab::sampling::buckets::BucketRule;
 use speclab::sampling::choice::Sampling;
 use speclab::sampling::hero::USUAL_K;
+use speclab::spectrum::TabulatedSpectrum;
 
 /// What to compare, and how.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -78,11 +87,11 @@ pub struct Line {
     pub rms_de00: f64,
 }
 
-/// The reference, random, hero, centre, box, fitted and texture lines for
-/// `light × surface`.
+/// The reference, random, hero, centre, box, fitted, published and texture
+/// lines for `light × surface`.
 pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec<Line>, StudyError> {
     let (l, r) = (&light.spectrum, &surface.spectrum);
-    let techniques = [
+    let mut techniques = vec![
         (Method::Reference, s.n, "reference".to_string()),
         (Method::Hero { k: 1, sampling: s.sampling }, s.n, format!("random n={}", s.n)),
         (Method::Hero { k: s.k, sampling: s.sampling }, s.n, format!("hero n={} K={}", s.n, s.k)),
@@ -90,6 +99,13 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
         (Method::Buckets { rule: BucketRule::BoxAverage }, s.m, format!("box M={}", s.m)),
         (Method::Fitted, s.m, format!("fitted M={}", s.m)),
     ];
+    for method in Method::PUBLISHED {
+        let label = match method {
+            Method::Prefiltered { .. } => method.to_string(),
+            _ => format!("{method} M={}", s.m),
+        };
+        techniques.push((method, s.m, label));
+    }
     let white = s.viewing.white(l);
     let exact = s.viewing.adapt(light.exact_at(s.depth, r), l);
     let (_, albedo, _) = texture::texture(surface)?;
@@ -104,6 +120,7 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
     };
     let lines: Result<Vec<Line>, StudyError> = techniques
         .into_iter()
+        .filter(|&(method, count, _)| exists(method, l, count))
         .map(|(method, count, label)| {
             let prepared = method.prepare(light)?.at_depth(s.depth);
             let estimate = |seed| prepared.xyz(r, count, seed).map(|x| s.viewing.adapt(x, l));
@@ -118,4 +135,12 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
     let mut lines = lines?;
     lines.push(texture_line);
     Ok(lines)
+}
+
+/// False for a published rule that does not exist for `light` at `count`.
+fn exists(method: Method, light: &TabulatedSpectrum, count: NonZeroUsize) -> bool {
+    match method {
+        Method::Published { family } => family.rule(light, count.get()).is_ok(),
+        _ => true,
+    }
 }

@@ -76,8 +76,19 @@ impl GridOptions {
         lights: &'a [Named],
         surfaces: &'a [Named],
     ) -> Result<Vec<GridRow<'a>>, StudyError> {
-        let mut rows = Vec::with_capacity(lights.len() * surfaces.len() * Method::ALL.len());
-        let methods = Method::ALL.map(|m| m.with_sampling(self.sampling));
+        self.rows_of(lights, surfaces, &Method::ALL)
+    }
+
+    /// [`GridOptions::rows`] for `methods` (a method's seed stream is its
+    /// cell's, as in [`Method::ALL`]; the fixed ones take M).
+    pub fn rows_of<'a>(
+        &self,
+        lights: &'a [Named],
+        surfaces: &'a [Named],
+        methods: &[Method],
+    ) -> Result<Vec<GridRow<'a>>, StudyError> {
+        let mut rows = Vec::with_capacity(lights.len() * surfaces.len() * methods.len());
+        let methods: Vec<Method> = methods.iter().map(|m| m.with_sampling(self.sampling)).collect();
         let mut cell = 0u64;
         for light in lights {
             let prepared: Vec<_> = methods

@@ -115,6 +115,10 @@ impl Column {
             Method::Buckets { rule: BucketRule::Center } => ["CENTER".into(), "BUCKETS".into(), m],
             Method::Buckets { rule: BucketRule::BoxAverage } => ["BOX".into(), "BUCKETS".into(), m],
             Method::Fitted => ["FITTED".into(), "RULE".into(), m],
+            Method::Published { family } => [family.to_string().to_uppercase(), "RULE".into(), m],
+            Method::Prefiltered { space } => {
+                ["PREFILTER".into(), space.to_string().to_uppercase(), String::new()]
+            }
         }
     }
 }

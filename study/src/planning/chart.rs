@@ -32,8 +32,10 @@ pub const CHART_MAX_N: usize = 1024;
 
 /// The charted methods, one curve each (the reference is one point): the
 /// assignment's random, hero with every strata under the uniform pdf, hero
-/// with every other pdf under jittered numbers, both bucket rules, and the
-/// rule fitted to the light. A pdf
+/// with every other pdf under jittered numbers, both bucket rules, the
+/// rule fitted to the light, and of the published ones ASTM's, Borges's
+/// and prefiltering in sharpened RGB (the strongest of their kinds in
+/// docs/published-rules.md). A pdf
 /// or strata added to [`PdfKind::ALL`] or [`Strata::ALL`] is charted with no
 /// change here.
 #[must_use]
@@ -45,6 +47,7 @@ pub fn curves() -> Vec<Method> {
         PdfKind::ALL.into_iter().filter(|&p| p != PdfKind::Uniform).map(|pdf| hero(pdf, Strata::Jittered)),
     );
     out.extend([Method::CENTER, Method::BOX, Method::FITTED]);
+    out.extend([Method::PUBLISHED[0], Method::PUBLISHED[1], Method::PUBLISHED[6]]);
     out
 }
 
@@ -115,6 +118,12 @@ pub fn points_with_costs(
     let mut out = Vec::new();
     for &method in methods {
         for count in chart_counts(method) {
+            // A Borges rule without real nodes for this light: no point.
+            if let Method::Published { family } = method
+                && family.rule(&light.spectrum, count).is_err()
+            {
+                continue;
+            }
             let config = Config::new(method, NonZeroUsize::new(count).unwrap_or(NonZeroUsize::MIN));
             let cost = cost(config)?;
             let mut rms = Vec::with_capacity(surfaces.len());
@@ -195,9 +204,10 @@ mod tests {
     fn curves_and_counts() {
         let curves = curves();
         // Reference, random, hero × every strata, hero × every other pdf, 2
-        // bucket rules, fitted.
-        assert_eq!(curves.len(), 2 + Strata::ALL.len() + PdfKind::ALL.len() - 1 + 3);
-        assert_eq!(curves.last(), Some(&Method::FITTED));
+        // bucket rules, fitted, ASTM, Borges, prefiltering.
+        assert_eq!(curves.len(), 2 + Strata::ALL.len() + PdfKind::ALL.len() - 1 + 3 + 3);
+        assert_eq!(curves[curves.len() - 4], Method::FITTED);
+        assert_eq!(curves.last().map(ToString::to_string).as_deref(), Some("prefilter-sharp"));
         for (i, a) in curves.iter().enumerate() {
             assert!(curves[i + 1..].iter().all(|b| b != a), "{a:?} twice");
         }
@@ -209,5 +219,7 @@ mod tests {
         assert_eq!(chart_counts(Method::BOX), (1..=64).collect::<Vec<_>>());
         assert_eq!(chart_counts(Method::FITTED), (1..=64).collect::<Vec<_>>());
         assert_eq!(chart_counts(Method::Reference), [1]);
+        assert_eq!(chart_counts(Method::PUBLISHED[0]), (4..=64).collect::<Vec<_>>());
+        assert_eq!(chart_counts(Method::PUBLISHED[6]), [3]);
     }
 }

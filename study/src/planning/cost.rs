@@ -33,6 +33,8 @@ use rand::rngs::StdRng;
 use crate::StudyError;
 use crate::evaluate::method::Method;
 use crate::evaluate::scene::Named;
+use crate::published::prefilter::{Prefiltered, Space};
+use speclab::sampling::reference;
 use speclab::sampling::rule::Rule;
 use speclab::spectrum::TabulatedSpectrum;
 
@@ -58,7 +60,10 @@ impl fmt::Display for Config {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.method {
             Method::Reference => write!(f, "reference"),
-            Method::Buckets { .. } | Method::Fitted => write!(f, "{} M={}", self.method, self.count),
+            Method::Prefiltered { .. } => write!(f, "{}", self.method),
+            Method::Buckets { .. } | Method::Fitted | Method::Published { .. } => {
+                write!(f, "{} M={}", self.method, self.count)
+            }
             m => {
                 let sampling = m.sampling().unwrap_or_default();
                 write!(f, "{m} {sampling} n={}", self.count)
@@ -84,6 +89,8 @@ pub fn measure(config: Config, light: &Named, surface: &TabulatedSpectrum) -> Re
     let rule = match config.method {
         Method::Fitted => light.rules()?.rule(m)?.clone(),
         Method::Buckets { rule } => Rule::buckets(m, rule)?,
+        Method::Published { family } => family.rule(&light.spectrum, m)?,
+        Method::Prefiltered { space } => return prefiltered(space, light, surface),
         method => {
             let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
             let prepared = method.prepare(light)?;
@@ -111,6 +118,21 @@ fn fixed(rule: &Rule, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) ->
         black_box(rule.xyz_of_factors(&[black_box(&l), black_box(&s)]));
     });
     Cost { per_estimate_ns, preparation_ns }
+}
+
+/// The cost of prefiltering: preparation integrates the surface under the
+/// light exactly and keeps three numbers (the light's own, once per scene,
+/// is not counted); an estimate multiplies them and converts to XYZ.
+fn prefiltered(space: Space, light: &Named, surface: &TabulatedSpectrum) -> Result<Cost, StudyError> {
+    let p = Prefiltered::new(space, reference::white(&light.spectrum))?;
+    let preparation_ns = median_ns(|| {
+        black_box(p.surface(light.exact(black_box(surface))));
+    });
+    let s = p.surface(light.exact(surface));
+    let per_estimate_ns = median_ns(|| {
+        black_box(p.xyz(&[black_box(s)]));
+    });
+    Ok(Cost { per_estimate_ns, preparation_ns })
 }
 
 /// The median over 7 timings of `f`'s duration, ns, after a warm-up; each

@@ -19,6 +19,9 @@
 //!   of a 95 % confidence interval of the RMS ΔE00 over the trials is. A
 //!   cell is first screened with a tenth of the trials: a clear failure
 //!   (its interval's lower end above the budget) costs no more.
+//! - **Published rules and prefiltering** ([`crate::published`]) are
+//!   built for one light: candidates only in a scene of one light, judged
+//!   like fitted rules (prefiltering at its one size, 3).
 //! - Candidates are tried in increasing cost; the first within budget is the
 //!   plan, the next three the runners-up; the rest are not tried.
 //!
@@ -39,10 +42,12 @@ use std::num::NonZeroUsize;
 use crate::StudyError;
 use crate::evaluate::method::{Method, derive_seed};
 use crate::evaluate::perceptual;
-use crate::evaluate::scene::{Depth, Named};
+use crate::evaluate::scene::{Depth, MAX_DEPTH, Named};
 use crate::evaluate::trials::{self, Stats};
 use crate::experiments::convergence::CONVERGENCE_MAX_N;
 use crate::planning::cost::{self, Config, Cost};
+use crate::published::prefilter::{Prefiltered, Space};
+use crate::published::rules::Family;
 use speclab::color::Xyz;
 use speclab::error::Error;
 use speclab::sampling::buckets::BucketRule;
@@ -136,7 +141,13 @@ pub struct Plan {
 /// is not finite and positive.
 pub fn plan(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<Plan, StudyError> {
     validate(lights, surfaces, request)?;
-    plan_with_costs(lights, surfaces, request, &costs(&lights[0], &surfaces[0])?)
+    let mut measured = Vec::new();
+    for config in configs().into_iter().filter(|c| request.allow_bias || !c.method.is_fixed()) {
+        if lights.len() == 1 || !is_per_light(config.method) {
+            measured.extend(measured_cost(config, &lights[0], &surfaces[0])?);
+        }
+    }
+    plan_with_costs(lights, surfaces, request, &measured)
 }
 
 /// An error for an empty scene or a budget that is not finite and positive.
@@ -155,10 +166,24 @@ fn validate(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<(
 pub fn costs(light: &Named, surface: &Named) -> Result<Vec<(Config, Cost)>, StudyError> {
     let mut out = Vec::new();
     for config in configs() {
-        out.push((config, cost::measure(config, light, &surface.spectrum)?));
+        out.extend(measured_cost(config, light, surface)?);
     }
     out.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
     Ok(out)
+}
+
+/// `config` with its cost on `light × surface`; none for a Borges rule
+/// without real nodes for this light.
+fn measured_cost(
+    config: Config,
+    light: &Named,
+    surface: &Named,
+) -> Result<Option<(Config, Cost)>, StudyError> {
+    match cost::measure(config, light, &surface.spectrum) {
+        Ok(cost) => Ok(Some((config, cost))),
+        Err(StudyError::Spectra(Error::NoMass)) if is_per_light(config.method) => Ok(None),
+        Err(e) => Err(e),
+    }
 }
 
 /// [`plan`] with costs measured before (by [`costs`]): the same costs give
@@ -173,11 +198,14 @@ pub fn plan_with_costs(
     validate(lights, surfaces, request)?;
     let scene = Scene::new(lights, surfaces, request.depth);
     let mut candidates = costs.to_vec();
+    // A published rule or a prefiltering is built for one light.
+    candidates.retain(|(c, _)| lights.len() == 1 || !is_per_light(c.method));
     candidates.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
     let (center, boxed) =
         (scene.bucket_errors(BucketRule::Center)?, scene.bucket_errors(BucketRule::BoxAverage)?);
     // Fitted rules are fitted (every M) only if one is tried.
     let mut fitted: Option<Vec<(f64, String)>> = None;
+    let mut published: [Option<Vec<(f64, String)>>; 4] = Default::default();
     let mut plan = Plan { chosen: None, runners_up: Vec::new(), others: Vec::new() };
     for (config, cost) in candidates {
         let m = config.count.get();
@@ -200,6 +228,15 @@ pub fn plan_with_costs(
             Method::Buckets { rule: BucketRule::BoxAverage } => {
                 bucket_verdict(&boxed, config.count.get(), request.budget)
             }
+            Method::Published { family } => {
+                let i = Family::ALL.iter().position(|&f| f == family).unwrap_or(0);
+                let worst = published[i].get_or_insert_with(|| scene.published_errors(family));
+                bucket_verdict(worst, config.count.get(), request.budget)
+            }
+            Method::Prefiltered { space } => {
+                let worst = scene.prefiltered_error(space)?;
+                bucket_verdict(&[worst], 1, request.budget)
+            }
             _ => scene.monte_carlo_verdict(config, request)?,
         };
         let candidate = Candidate { config, cost, verdict };
@@ -221,10 +258,16 @@ fn configs() -> Vec<Config> {
         .flat_map(|s| random.map(|m| m.with_sampling(s)))
         .flat_map(|m| m.counts(CONVERGENCE_MAX_N).into_iter().map(move |n| Config::new(m, count(n))))
         .collect();
-    for method in [Method::CENTER, Method::BOX, Method::FITTED] {
+    for method in [Method::CENTER, Method::BOX, Method::FITTED].into_iter().chain(Method::PUBLISHED) {
         out.extend(method.counts(CONVERGENCE_MAX_N).into_iter().map(|m| Config::new(method, count(m))));
     }
     out
+}
+
+/// True for the methods built for one light: the published rules and
+/// prefiltering.
+fn is_per_light(method: Method) -> bool {
+    matches!(method, Method::Published { .. } | Method::Prefiltered { .. })
 }
 
 /// The verdict for M buckets (or fitted wavelengths) from the worst ΔE00
@@ -307,6 +350,44 @@ impl<'a> Scene<'a> {
             factors.extend_from_slice(path.factors());
             Ok(rules[m - 1].xyz_of_product(&factors))
         })
+    }
+
+    /// For M = 1 … 64, the worst ΔE00 of the published rule of `family`
+    /// for the scene's light, and where; +∞ where the rule does not exist
+    /// (below the family's smallest M, or a Borges rule without real nodes).
+    fn published_errors(&self, family: Family) -> Vec<(f64, String)> {
+        (1..=MAX_M)
+            .map(|m| {
+                let mut worst = (f64::NEG_INFINITY, String::new());
+                // One light (per-light methods are candidates for no other scene).
+                let light = self.cells[0].0;
+                let Ok(rule) = family.rule(&light.spectrum, m) else {
+                    return (f64::INFINITY, format!("no {family} rule of {m} for {}", light.name));
+                };
+                for (l, s, exact, white) in &self.cells {
+                    let path = self.depth.path(&s.spectrum);
+                    let de = perceptual::delta_e00(rule.xyz_of_product(path.factors()), *exact, *white);
+                    if de > worst.0 {
+                        worst = (de, format!("{} × {}", l.name, s.name));
+                    }
+                }
+                worst
+            })
+            .collect()
+    }
+
+    /// The worst ΔE00 of prefiltering in `space`, and where.
+    fn prefiltered_error(&self, space: Space) -> Result<(f64, String), StudyError> {
+        let mut worst = (f64::NEG_INFINITY, String::new());
+        for (l, s, exact, white) in &self.cells {
+            let p = Prefiltered::new(space, *white)?;
+            let one = p.surface(l.exact(&s.spectrum));
+            let de = perceptual::delta_e00(p.xyz(&[one; MAX_DEPTH][..self.depth.get()]), *exact, *white);
+            if de > worst.0 {
+                worst = (de, format!("{} × {}", l.name, s.name));
+            }
+        }
+        Ok(worst)
     }
 
     /// Screens every cell with a tenth of the trials, then runs them all;

@@ -43,15 +43,6 @@ pub enum Candidate {
 }
 
 impl Candidate {
-    /// The numbers carried per spectrum: M, or 3 for prefiltering.
-    #[must_use]
-    pub fn m(self) -> usize {
-        match self {
-            Candidate::Fitted(m) | Candidate::Published(_, m) => m,
-            Candidate::Prefiltered(_) => 3,
-        }
-    }
-
     /// Its colour of light × `surface`^depth, ready for one light.
     fn prepare(self, light: &Named) -> Result<Prepared, StudyError> {
         Ok(match self {
@@ -93,7 +84,7 @@ impl Prepared {
         match self {
             Prepared::Fitted(rule) => rule.xyz_of_product(factors),
             Prepared::Published(rule) => rule.xyz_of_product(&factors[1..]),
-            Prepared::Prefiltered(p) => p.xyz(&vec![p.surface(light.exact(surface)); depth.get()]),
+            Prepared::Prefiltered(p) => p.xyz(&[p.surface(light.exact(surface)); MAX_DEPTH][..depth.get()]),
         }
     }
 }

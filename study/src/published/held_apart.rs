@@ -100,5 +100,9 @@ mod tests {
         let count = |p: &str| all.iter().filter(|n| n.name.starts_with(p)).count();
         assert_eq!((count("tcs/"), count("cqs/"), count("ohta/")), (14, 15, 24));
         assert!(all.iter().all(|n| n.spectrum.values().iter().all(|v| (0.0..=1.0).contains(v))));
+        let lambda = all[52].spectrum.lambda();
+        assert_eq!((lambda.len(), lambda[1], lambda[80]), (81, 385.0, 780.0));
+        // TCS01's and VS1's values at 380 nm, as published.
+        assert_eq!((all[0].spectrum.values()[0], all[14].spectrum.values()[0]), (0.219, 0.053));
     }
 }

@@ -98,15 +98,26 @@ impl Prefiltered {
     /// A surface's three numbers, from the exact XYZ of light × surface.
     #[must_use]
     pub fn surface(&self, xyz: Xyz) -> [f64; 3] {
-        let c = mul(&self.to_space, xyz.to_array());
+        let c = self.in_space(xyz);
         [0, 1, 2].map(|i| c[i] / self.light[i])
+    }
+
+    /// `xyz` in the space: `A·xyz`.
+    #[must_use]
+    pub fn in_space(&self, xyz: Xyz) -> [f64; 3] {
+        mul(&self.to_space, xyz.to_array())
+    }
+
+    /// A colour in the space back in XYZ: `A⁻¹·c`.
+    #[must_use]
+    pub fn to_xyz(&self, c: [f64; 3]) -> Xyz {
+        Xyz::from(mul(&self.from_space, c))
     }
 
     /// The XYZ of a path through `surfaces` (their three numbers, in
     /// order): `A⁻¹·(l ⊙ s₁ ⊙ …)`.
     #[must_use]
     pub fn xyz(&self, surfaces: &[[f64; 3]]) -> Xyz {
-        let c = surfaces.iter().fold(self.light, |acc, s| [0, 1, 2].map(|i| acc[i] * s[i]));
-        Xyz::from(mul(&self.from_space, c))
+        self.to_xyz(surfaces.iter().fold(self.light, |acc, s| [0, 1, 2].map(|i| acc[i] * s[i])))
     }
 }

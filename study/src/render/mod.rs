@@ -1,8 +1,9 @@
 //! A small path tracer over the core's renderer API, and what it measures:
 //! a box of ColorChecker walls and spheres with an RGB-textured back wall,
-//! lit by one or two lights in the ceiling, colour carried three ways
+//! lit by one or two lights in the ceiling, colour carried four ways
 //! (the core's [`speclab::carry`]: hero wavelengths, a fitted rule, RGB
-//! triples), each against the exact image of its own paths.
+//! triples; and [`ways::Prefilter`], spectrally prefiltered triples), each
+//! against the exact image of its own paths.
 //!
 //! - [`tracer`]: the scene's geometry and the one tracer, generic over the
 //!   way colour is carried;
@@ -62,9 +63,11 @@ pub enum Way {
     Fitted,
     /// Linear sRGB triples.
     Rgb,
+    /// Spectral prefiltering in sharpened RGB ([`ways::Prefilter`]).
+    Prefilter,
 }
 
-named_choices!(Way, "a way to carry colour": Hero => "hero", Fitted => "fitted", Rgb => "rgb");
+named_choices!(Way, "a way to carry colour": Hero => "hero", Fitted => "fitted", Rgb => "rgb", Prefilter => "prefilter");
 
 /// What to render, and how.
 #[derive(Clone, Debug, PartialEq)]

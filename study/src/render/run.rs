@@ -16,7 +16,8 @@ use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Float, Mixture, O
 use speclab::{TabulatedSpectrum, Xyz};
 
 use crate::evaluate::perceptual;
-use crate::render::ways::Albedo;
+use crate::published::prefilter::Space;
+use crate::render::ways::{Albedo, Prefilter};
 use crate::render::{Options, Render, Setup, Way, render};
 
 /// Something done with a way of carrying colour, whatever its type (a
@@ -50,6 +51,12 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
             let mut rgb = Rgb::new(&setup.light_spectra(), &setup.patches);
             rgb.surfaces.extend(setup.colours.iter().map(|&c| LinearRgb::from(c)));
             Ok(with.go(&rgb))
+        }
+        Way::Prefilter => {
+            let mut surfaces: Vec<Albedo<&TabulatedSpectrum>> =
+                setup.patches.iter().map(Albedo::Measured).collect();
+            surfaces.extend(setup.texture.iter().cloned().map(Albedo::Texel));
+            Ok(with.go(&Prefilter::new(Space::Sharp, &setup.light_spectra(), &surfaces)?))
         }
         Way::Fitted => {
             let rules = Rule::fit_each(&setup.light_spectra(), o.m)?;

@@ -153,6 +153,8 @@ pub fn survey(
     };
     let measure = |spp| Measure { o, setup, spp };
     push("rgb".into(), o.spp, with_carry(&Options { way: Way::Rgb, ..o.clone() }, setup, measure(o.spp))?);
+    let prefilter = Options { way: Way::Prefilter, ..o.clone() };
+    push("prefilter".into(), o.spp, with_carry(&prefilter, setup, measure(o.spp))?);
     for m in FITTED_M {
         let fitted = Options { way: Way::Fitted, m, ..o.clone() };
         push(format!("fitted M={m}"), o.spp, with_carry(&fitted, setup, measure(o.spp))?);

@@ -43,7 +43,11 @@ where
 #[test]
 fn study_choices() {
     round_trip(&Normalization::ALL, &["none", "power", "luminance"], "a normalisation");
+    let every: Vec<Method> = Method::ALL.iter().chain(&Method::PUBLISHED).copied().collect();
+    round_trip(&every, &Method::EVERY_NAME, "a method");
+    assert_eq!(&Method::EVERY_NAME[..6], Method::NAMES);
+    assert_eq!(&Method::EVERY_NAME[6..], Method::PUBLISHED_NAMES);
     let methods = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];
-    round_trip(&Method::ALL, &methods, "a method");
-    round_trip(&Way::ALL, &["hero", "fitted", "rgb"], "a way to carry colour");
+    assert_eq!(Method::NAMES, methods);
+    round_trip(&Way::ALL, &["hero", "fitted", "rgb", "prefilter"], "a way to carry colour");
 }

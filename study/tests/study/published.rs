@@ -150,3 +150,114 @@ fn the_table_counts_pairs_and_reads_each_lights_worst() {
     assert!(compare::table(&[], &surfaces, &[Candidate::Fitted(6)], Depth::ONE).is_err());
     assert!(Family::Astm.rule(&lights::D65, 3).is_err() && Family::Wallis.rule(&lights::D65, 65).is_err());
 }
+
+#[test]
+fn the_published_methods_run_wherever_methods_run() {
+    use speclab_study::evaluate::method::Method;
+    use std::num::NonZeroUsize;
+    let n = |m| NonZeroUsize::new(m).unwrap();
+    let astm: Method = "astm".parse().unwrap();
+    assert!(astm.is_fixed() && !astm.is_random() && astm.counts(64) == (4..=64).collect::<Vec<_>>());
+    for (_, patch) in patches::ALL {
+        let (ours, exact) =
+            (astm.xyz(&lights::A, patch, n(36), 1).unwrap(), reference::xyz(&lights::A, patch));
+        assert!((ours.y - exact.y).abs() <= 1e-9 * exact.y);
+    }
+    let sharp: Method = "PREFILTER-SHARP".parse().unwrap();
+    assert_eq!((sharp.counts(64), sharp.reported_samples(n(16)), sharp.evaluations(n(16))), (vec![3], 3, 3));
+    let once = sharp.xyz(&lights::F11, &patches::G4, n(16), 1).unwrap();
+    assert!((once.y - reference::xyz(&lights::F11, &patches::G4).y).abs() < 1e-9 * once.y);
+    let f11 = Named::from(Light::F11);
+    let twice = sharp.prepare(&f11).unwrap().at_depth(Depth::new(2).unwrap());
+    let table = compare::table(
+        std::slice::from_ref(&f11),
+        &[Named::from(speclab::data::Patch::G4)],
+        &[Candidate::Prefiltered(Space::Sharp)],
+        Depth::new(2).unwrap(),
+    )
+    .unwrap();
+    let exact2 = f11.exact_at(Depth::new(2).unwrap(), &patches::G4);
+    let de = speclab_study::evaluate::perceptual::delta_e00(
+        twice.xyz(&patches::G4, n(3), 1).unwrap(),
+        exact2,
+        reference::white(&lights::F11),
+    );
+    assert!((de - table[0].worst).abs() < 1e-12 && de > 0.05, "{de} against {}", table[0].worst);
+    let borges = Method::Published { family: Family::Borges };
+    assert_eq!(borges.to_string(), "borges");
+    let config = speclab_study::planning::cost::Config::new(borges, n(12));
+    assert_eq!(config.to_string(), "borges M=12");
+    assert_eq!(speclab_study::planning::cost::Config::new(sharp, n(3)).to_string(), "prefilter-sharp");
+}
+
+#[test]
+fn the_planner_takes_the_published_methods_for_one_light_only() {
+    use speclab_study::evaluate::method::Method;
+    use speclab_study::planning::cost::{Config, Cost};
+    use speclab_study::planning::plan::{self, Request, Verdict};
+    use std::num::NonZeroUsize;
+    let n = |m| NonZeroUsize::new(m).unwrap();
+    let cost = |ns| Cost { per_estimate_ns: ns, preparation_ns: 0.0 };
+    let sharp = Method::PUBLISHED[6];
+    let costs = [
+        (Config::new(sharp, n(3)), cost(1.0)),
+        (Config::new(Method::PUBLISHED[0], n(36)), cost(2.0)),
+        (Config::new(Method::FITTED, n(20)), cost(3.0)),
+    ];
+    let surfaces = scene::builtin_surfaces();
+    let one = [Named::from(Light::F11)];
+    let request = Request::default();
+    let at_one = plan::plan_with_costs(&one, &surfaces, &request, &costs).unwrap();
+    assert_eq!(at_one.chosen.map(|c| c.config.method), Some(sharp)); // exact at one bounce
+    assert_eq!(at_one.runners_up.len(), 2);
+    let deeper = Request { depth: Depth::new(3).unwrap(), ..Request::default() };
+    let at_three = plan::plan_with_costs(&one, &surfaces, &deeper, &costs).unwrap();
+    let first = &at_three.others[0];
+    assert!(first.config.method == sharp && matches!(first.verdict, Verdict::Above { .. }), "{first:?}");
+    let two = [Named::from(Light::F11), Named::from(Light::A)];
+    let both = plan::plan_with_costs(&two, &surfaces, &request, &costs).unwrap();
+    let listed: Vec<Method> =
+        both.chosen.iter().chain(&both.runners_up).chain(&both.others).map(|c| c.config.method).collect();
+    assert_eq!(listed, [Method::FITTED]);
+}
+
+#[test]
+fn the_table_keeps_lights_without_a_borges_rule_and_counts_pairs_above_one() {
+    let (lights, surfaces) = (scene::builtin_lights(), scene::builtin_surfaces());
+    // No D65, A or F11 has a Borges rule of 36 with real nodes inside.
+    let rows =
+        compare::table(&lights, &surfaces, &[Candidate::Published(Family::Borges, 36)], Depth::ONE).unwrap();
+    assert_eq!(rows[0].pairs, 0);
+    assert!(rows[0].per_light.iter().all(|w| w.is_nan()));
+    // Two wavelengths are far off everywhere; prefiltering nowhere.
+    let four = Depth::new(speclab_study::evaluate::scene::MAX_DEPTH).unwrap();
+    let rows =
+        compare::table(&lights, &surfaces, &[Candidate::Fitted(2), Candidate::Prefiltered(Space::Xyz)], four)
+            .unwrap();
+    // The count, recomputed pair by pair through the study's `Method`.
+    let mut above = 0;
+    for light in &lights {
+        let fitted = speclab_study::evaluate::Method::FITTED.prepare(light).unwrap().at_depth(four);
+        for s in &surfaces {
+            let ours = fitted.xyz(&s.spectrum, std::num::NonZeroUsize::new(2).unwrap(), 1).unwrap();
+            let exact = light.exact_at(four, &s.spectrum);
+            let de = speclab_study::evaluate::perceptual::delta_e00(
+                ours,
+                exact,
+                reference::white(&light.spectrum),
+            );
+            above += usize::from(de > 1.0);
+        }
+    }
+    assert!(above > 0 && above < 18);
+    assert_eq!((rows[0].above_one, rows[0].pairs, rows[0].depth), (above, 18, 4));
+    let at_one =
+        compare::table(&lights, &surfaces, &[Candidate::Prefiltered(Space::Xyz)], Depth::ONE).unwrap();
+    assert_eq!(at_one[0].above_one, 0);
+    // Another candidate's failure is an error, not a missing light.
+    let black = Named::new(
+        "black",
+        speclab::TabulatedSpectrum::new(vec![380.0, 730.0], vec![0.0, 0.0], speclab::Role::Light).unwrap(),
+    );
+    assert!(compare::table(&[black], &surfaces, &[Candidate::Fitted(6)], Depth::ONE).is_err());
+}
