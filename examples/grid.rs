@@ -87,7 +87,7 @@ fn parse_args() -> Result<Args, lexopt::Error> {
             Long("m") => args.grid.m = parser.value()?.parse_with(args::buckets)?,
             Long("seed") => args.grid.seed = parser.value()?.parse()?,
             Long("depth") => args.grid.depth = parser.value()?.parse()?,
-            Long("method") => args.extra.push(parser.value()?.parse()?),
+            Long("method") => args.extra.push(parser.value()?.parse_with(published)?),
             Long("csv") => args.csv = true,
             Long("texture") => args.texture = true,
             Long("light") => {
@@ -115,6 +115,17 @@ fn parse_args() -> Result<Args, lexopt::Error> {
         }
     }
     Ok(args)
+}
+
+/// A published method's name (the six default methods are always shown).
+fn published(name: &str) -> Result<Method, String> {
+    match name.parse::<Method>() {
+        Ok(m) if Method::PUBLISHED.contains(&m) => Ok(m),
+        _ => Err(format!(
+            "expected a published method ({}), found {name:?}",
+            Method::PUBLISHED_NAMES.join(", ")
+        )),
+    }
 }
 
 /// Adds `choice` to `list`, replacing the defaults on the first one.

@@ -100,13 +100,23 @@ pub enum Error {
         weight: f64,
     },
     /// An entry of a rule given by its wavelengths and weights
-    /// (`Rule::new`): a wavelength outside 380–730 nm, a weight that is not
-    /// finite, or rows of unequal length.
+    /// (`Rule::new`): a wavelength outside 380–730 nm, or a weight that is
+    /// not finite.
     RuleEntry {
         /// Which wavelength of the rule.
         index: usize,
-        /// The wavelength given, nm (NaN where a row is too short).
+        /// The wavelength given, nm.
         lambda: f64,
+    },
+    /// A weight row of a rule (`Rule::new`) whose length is not the number
+    /// of wavelengths.
+    RuleShape {
+        /// Which row: 0, 1, 2 for X, Y, Z.
+        row: usize,
+        /// Its length.
+        len: usize,
+        /// The number of wavelengths.
+        expected: usize,
     },
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
@@ -175,6 +185,10 @@ impl fmt::Display for Error {
                 f,
                 "rule wavelength {index}: expected a wavelength in 380–730 nm with a finite weight in each of X, Y and Z, found {lambda} nm"
             ),
+            Error::RuleShape { row, len, expected } => {
+                let name = ["X", "Y", "Z"].get(*row).copied().unwrap_or("?");
+                write!(f, "rule weights for {name}: expected {expected} (one per wavelength), found {len}")
+            }
             Error::UnknownName { what, expected, found } if expected.len() <= 12 => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))
             }

@@ -74,8 +74,10 @@ impl<L: Spectrum> PreparedLight<L> {
     /// [`PreparedLight::xyz_samples`] integrates the clamp exactly). On an
     /// equidistant grid they are the light's tristimulus weighting factors
     /// in the sense of ASTM E2022 (the Lagrange basis of the reflectance's
-    /// interpolant integrated against light × observer), unnormalised, over
-    /// 380–730 nm and integrated exactly.
+    /// interpolant integrated against light × observer), unnormalised and
+    /// integrated exactly over the grid's span within 380–730 nm (a grid
+    /// that ends short of 730 nm leaves the rest out, as the reference does
+    /// for a reflectance tabulated that far).
     ///
     /// ```
     /// use speclab::{data::{lights, patches}, sampling::PreparedLight};

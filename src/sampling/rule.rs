@@ -33,11 +33,12 @@ use crate::sampling::buckets::{BucketRule, center};
 use crate::sampling::wavelengths::{FixedWavelengths, Weighted, dot_slices};
 use crate::spectrum::{Float, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
-/// The most wavelengths a rule takes (buckets and fitted rules alike).
+/// The most wavelengths a rule takes (buckets, fitted and given rules alike).
 pub const MAX_M: usize = 64;
 
 /// What a rule is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum RuleKind {
     /// Equidistant buckets.
     Buckets(BucketRule),
@@ -74,8 +75,9 @@ impl Rule {
     /// The rule of these wavelengths (nm) and weight rows `[w_X, w_Y, w_Z]`
     /// (nm, one per wavelength each; XYZ꜀ = `Σᵢ w꜀ᵢ·vᵢ`), sorted by
     /// wavelength. An [`Error::Count`] unless `1 ≤ M ≤` [`MAX_M`]; an
-    /// [`Error::RuleEntry`] for a wavelength outside 380–730 nm, a weight
-    /// that is not finite or a row of another length.
+    /// [`Error::RuleShape`] for a row of another length; an
+    /// [`Error::RuleEntry`] for a wavelength outside 380–730 nm or a weight
+    /// that is not finite.
     ///
     /// ```
     /// use speclab::data::{lights, patches};
@@ -91,17 +93,14 @@ impl Rule {
     pub fn new(lambda: Vec<f64>, weights: [Vec<f64>; 3]) -> Result<Rule, Error> {
         let m = lambda.len();
         check_m("a rule's wavelength count", m)?;
-        let rows = weights.iter().map(Vec::len).min().unwrap_or(0);
+        if let Some(row) = weights.iter().position(|r| r.len() != m) {
+            return Err(Error::RuleShape { row, len: weights[row].len(), expected: m });
+        }
         let valid = |i: usize| {
-            (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda[i])
-                && i < rows
-                && weights.iter().all(|r| r[i].is_finite())
+            (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda[i]) && weights.iter().all(|r| r[i].is_finite())
         };
         if let Some(i) = (0..m).find(|&i| !valid(i)) {
             return Err(Error::RuleEntry { index: i, lambda: lambda[i] });
-        }
-        if weights.iter().any(|r| r.len() != m) {
-            return Err(Error::RuleEntry { index: m, lambda: f64::NAN });
         }
         let mut order: Vec<usize> = (0..m).collect();
         order.sort_by(|&a, &b| lambda[a].total_cmp(&lambda[b]));
@@ -273,10 +272,12 @@ mod tests {
         assert_eq!(entry(Rule::new(vec![379.0, 500.0], rows([1.0, 1.0]))), Some((0, 379.0)));
         assert_eq!(entry(Rule::new(vec![500.0, 600.0], rows([1.0, f64::NAN]))), Some((1, 600.0)));
         assert_eq!(entry(Rule::new(vec![500.0, 600.0], rows([f64::INFINITY, 1.0]))), Some((0, 500.0)));
-        let short = [vec![1.0], vec![1.0; 2], vec![1.0; 2]];
-        assert_eq!(entry(Rule::new(vec![500.0, 600.0], short)), Some((1, 600.0)));
-        let long = Rule::new(vec![500.0, 600.0], [vec![1.0; 3], vec![1.0; 2], vec![1.0; 2]]);
-        assert!(matches!(entry(long), Some((2, l)) if l.is_nan()));
+        let short = Rule::new(vec![500.0, 600.0], [vec![1.0; 2], vec![1.0], vec![1.0; 2]]);
+        assert!(matches!(short, Err(Error::RuleShape { row: 1, len: 1, expected: 2 })));
+        let long = Rule::new(vec![500.0, 600.0], [vec![1.0; 2], vec![1.0; 2], vec![1.0; 3]]);
+        assert!(matches!(long, Err(Error::RuleShape { row: 2, len: 3, expected: 2 })));
+        let shape = Error::RuleShape { row: 1, len: 1, expected: 2 }.to_string();
+        assert_eq!(shape, "rule weights for Y: expected 2 (one per wavelength), found 1");
         assert!(matches!(Rule::new(Vec::new(), Default::default()), Err(Error::Count { found: 0, .. })));
         let edges = Rule::new(vec![LAMBDA_MIN, LAMBDA_MAX], rows([1.0, 1.0])).unwrap();
         assert_eq!(edges.m(), 2);

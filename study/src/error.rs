@@ -27,6 +27,15 @@ pub enum StudyError {
         /// The budget given.
         value: f64,
     },
+    /// A published rule that does not exist for the light: a Gauss rule of
+    /// more points than the light's weight has support, or a Borges rule
+    /// whose shared nodes are not real and inside 380–730 nm.
+    NoRule {
+        /// The family's name, e.g. `borges`.
+        family: String,
+        /// The wavelengths asked for.
+        m: usize,
+    },
     /// A path depth outside 1 ..= `max`.
     Depth {
         /// What was given.
@@ -46,6 +55,10 @@ impl fmt::Display for StudyError {
             StudyError::Budget { value } => {
                 write!(f, "expected a finite positive ΔE00 budget, found {value}")
             }
+            StudyError::NoRule { family, m } => write!(
+                f,
+                "expected a light with a {family} rule of {m} wavelengths, found none (no real nodes inside 380–730 nm)"
+            ),
             StudyError::Depth { found, max } => {
                 write!(f, "expected a path depth from 1 to {max}, found {found:?}")
             }

@@ -219,8 +219,12 @@ fn curve_series(
     let last = curve.iter().map(|p| p.config.count.get()).max().unwrap_or(0);
     let labels = curve.iter().zip(&xy).filter(|(p, _)| labelled(method, p.config.count.get(), last));
     chart.draw_series(labels.map(|(p, &(x, y))| {
-        let prefix = if method.is_fixed() { "M" } else { "n" };
-        Text::new(format!("{prefix}{}", p.config.count), (x * 1.08, y * 1.04), text.clone())
+        let label = match method {
+            Method::Prefiltered { .. } => "prefilter".to_string(),
+            m if m.is_fixed() => format!("M{}", p.config.count),
+            _ => format!("n{}", p.config.count),
+        };
+        Text::new(label, (x * 1.08, y * 1.04), text.clone())
     }))?;
     Ok(())
 }

@@ -57,7 +57,6 @@ use speclab::sampling::choice::{ChosenPdf, Sampling};
 use speclab::sampling::fitted::FittedRules;
 use speclab::sampling::hero::{self, USUAL_K};
 use speclab::sampling::pdf::WavelengthPdf;
-use speclab::sampling::reference;
 use speclab::sampling::rule::{MAX_M, Rule};
 use speclab::spectrum::{Spectrum, TabulatedSpectrum};
 
@@ -353,10 +352,9 @@ impl Estimator<'_> {
             Method::Buckets { rule } => Rule::buckets(m, rule)?.xyz_of_product(factors),
             Method::Fitted => self.rule(m)?.ok_or(Error::NoMass)?.xyz_of_product(factors),
             // The rule's weights include the light: the surfaces alone.
-            Method::Published { family } => family.rule(light, m)?.xyz_of_product(&factors[1..]),
+            Method::Published { family } => self.light.published(family, m)?.xyz_of_product(&factors[1..]),
             Method::Prefiltered { space } => {
-                let p = Prefiltered::new(space, reference::white(light))?;
-                p.xyz(&[p.surface(self.light.exact(surface)); MAX_DEPTH][..depth.get()])
+                Prefiltered::new(space, self.light.white())?.path_xyz(self.light.exact(surface), depth.get())
             }
         })
     }

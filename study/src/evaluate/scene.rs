@@ -15,10 +15,11 @@
 //! # Ok::<(), speclab_study::StudyError>(())
 //! ```
 
+use std::collections::HashMap;
 use std::fmt;
 use std::path::PathBuf;
 use std::str::FromStr;
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use speclab::color::Xyz;
 use speclab::io::Load;
@@ -29,11 +30,14 @@ use speclab::spectrum::data::{Light, Patch, SURFACE_NAMES, lights, surface_named
 use speclab::spectrum::{Product, Role, Spectrum, TabulatedSpectrum};
 
 use crate::StudyError;
+use crate::published::rules::Family;
+use speclab::sampling::rule::Rule;
 
 /// A spectrum with the name it has in tables, and, used as a light, what
 /// the study prepares for it once: its exact reference weights (for the
-/// grid of the first reflectance it meets), its wavelength pdfs and its
-/// fitted rules, made on first use and shared by its clones.
+/// grid of the first reflectance it meets), its wavelength pdfs, its
+/// fitted rules, its white and its published rules, made on first use and
+/// shared by its clones.
 #[derive(Clone)]
 pub struct Named {
     /// Name, e.g. `D65`, or a file's stem.
@@ -50,6 +54,9 @@ struct Prepared {
     weights: OnceLock<Option<PreparedLight<TabulatedSpectrum>>>,
     pdfs: [OnceLock<ChosenPdf>; PdfKind::ALL.len()],
     rules: OnceLock<FittedRules>,
+    white: OnceLock<Xyz>,
+    /// Published rules by family and M (`None`: no such rule for the light).
+    published: Mutex<HashMap<(Family, usize), Option<Rule>>>,
 }
 
 impl Named {
@@ -87,6 +94,34 @@ impl Named {
     pub fn pdf(&self, kind: PdfKind) -> Result<ChosenPdf, StudyError> {
         let index = PdfKind::ALL.iter().position(|&k| k == kind).unwrap_or(0);
         kept(&self.prepared.pdfs[index], || kind.for_light(&self.spectrum))
+    }
+
+    /// The exact XYZ of the perfect white under this light, computed once.
+    #[must_use]
+    pub fn white(&self) -> Xyz {
+        *self.prepared.white.get_or_init(|| reference::white(&self.spectrum))
+    }
+
+    /// The published rule of `family` and `m` wavelengths for this light,
+    /// built on first use ([`Family::rule`]).
+    pub fn published(&self, family: Family, m: usize) -> Result<Rule, StudyError> {
+        let key = (family, m);
+        let known = self.prepared.published.lock().map(|c| c.get(&key).cloned()).unwrap_or(None);
+        let rule = match known {
+            Some(rule) => rule,
+            None => {
+                let made = match family.rule(&self.spectrum, m) {
+                    Ok(rule) => Some(rule),
+                    Err(StudyError::NoRule { .. }) => None,
+                    Err(e) => return Err(e),
+                };
+                if let Ok(mut cache) = self.prepared.published.lock() {
+                    cache.insert(key, made.clone());
+                }
+                made
+            }
+        };
+        rule.ok_or_else(|| StudyError::NoRule { family: family.to_string(), m })
     }
 
     /// The rules fitted to this light alone, each M fitted on first use.

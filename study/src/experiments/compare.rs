@@ -39,7 +39,6 @@ use speclab::color::LinearSrgb;
 use speclab::sampling::buckets::BucketRule;
 use speclab::sampling::choice::Sampling;
 use speclab::sampling::hero::USUAL_K;
-use speclab::spectrum::TabulatedSpectrum;
 
 /// What to compare, and how.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -120,7 +119,7 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
     };
     let lines: Result<Vec<Line>, StudyError> = techniques
         .into_iter()
-        .filter(|&(method, count, _)| exists(method, l, count))
+        .filter(|&(method, count, _)| exists(method, light, count))
         .map(|(method, count, label)| {
             let prepared = method.prepare(light)?.at_depth(s.depth);
             let estimate = |seed| prepared.xyz(r, count, seed).map(|x| s.viewing.adapt(x, l));
@@ -138,9 +137,11 @@ pub fn compare(light: &Named, surface: &Named, s: &CompareOptions) -> Result<Vec
 }
 
 /// False for a published rule that does not exist for `light` at `count`.
-fn exists(method: Method, light: &TabulatedSpectrum, count: NonZeroUsize) -> bool {
+fn exists(method: Method, light: &Named, count: NonZeroUsize) -> bool {
     match method {
-        Method::Published { family } => family.rule(light, count.get()).is_ok(),
+        Method::Published { family } => {
+            !matches!(light.published(family, count.get()), Err(StudyError::NoRule { .. }))
+        }
         _ => true,
     }
 }

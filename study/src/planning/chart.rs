@@ -120,7 +120,7 @@ pub fn points_with_costs(
         for count in chart_counts(method) {
             // A Borges rule without real nodes for this light: no point.
             if let Method::Published { family } = method
-                && family.rule(&light.spectrum, count).is_err()
+                && matches!(light.published(family, count), Err(StudyError::NoRule { .. }))
             {
                 continue;
             }

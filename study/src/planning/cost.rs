@@ -34,7 +34,6 @@ use crate::StudyError;
 use crate::evaluate::method::Method;
 use crate::evaluate::scene::Named;
 use crate::published::prefilter::{Prefiltered, Space};
-use speclab::sampling::reference;
 use speclab::sampling::rule::Rule;
 use speclab::spectrum::TabulatedSpectrum;
 
@@ -89,7 +88,7 @@ pub fn measure(config: Config, light: &Named, surface: &TabulatedSpectrum) -> Re
     let rule = match config.method {
         Method::Fitted => light.rules()?.rule(m)?.clone(),
         Method::Buckets { rule } => Rule::buckets(m, rule)?,
-        Method::Published { family } => family.rule(&light.spectrum, m)?,
+        Method::Published { family } => light.published(family, m)?,
         Method::Prefiltered { space } => return prefiltered(space, light, surface),
         method => {
             let preparation_ns = median_ns(|| drop(black_box(method.prepare(light))));
@@ -124,7 +123,7 @@ fn fixed(rule: &Rule, light: &TabulatedSpectrum, surface: &TabulatedSpectrum) ->
 /// light exactly and keeps three numbers (the light's own, once per scene,
 /// is not counted); an estimate multiplies them and converts to XYZ.
 fn prefiltered(space: Space, light: &Named, surface: &TabulatedSpectrum) -> Result<Cost, StudyError> {
-    let p = Prefiltered::new(space, reference::white(&light.spectrum))?;
+    let p = Prefiltered::new(space, light.white())?;
     let preparation_ns = median_ns(|| {
         black_box(p.surface(light.exact(black_box(surface))));
     });

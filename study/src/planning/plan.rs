@@ -42,7 +42,7 @@ use std::num::NonZeroUsize;
 use crate::StudyError;
 use crate::evaluate::method::{Method, derive_seed};
 use crate::evaluate::perceptual;
-use crate::evaluate::scene::{Depth, MAX_DEPTH, Named};
+use crate::evaluate::scene::{Depth, Named};
 use crate::evaluate::trials::{self, Stats};
 use crate::experiments::convergence::CONVERGENCE_MAX_N;
 use crate::planning::cost::{self, Config, Cost};
@@ -142,8 +142,11 @@ pub struct Plan {
 pub fn plan(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<Plan, StudyError> {
     validate(lights, surfaces, request)?;
     let mut measured = Vec::new();
-    for config in configs().into_iter().filter(|c| request.allow_bias || !c.method.is_fixed()) {
-        if lights.len() == 1 || !is_per_light(config.method) {
+    // Published rules and prefiltering: measured only where they can be
+    // chosen (biased, and built for one light).
+    let per_light = request.allow_bias && lights.len() == 1;
+    for config in configs() {
+        if per_light || !is_per_light(config.method) {
             measured.extend(measured_cost(config, &lights[0], &surfaces[0])?);
         }
     }
@@ -181,7 +184,7 @@ fn measured_cost(
 ) -> Result<Option<(Config, Cost)>, StudyError> {
     match cost::measure(config, light, &surface.spectrum) {
         Ok(cost) => Ok(Some((config, cost))),
-        Err(StudyError::Spectra(Error::NoMass)) if is_per_light(config.method) => Ok(None),
+        Err(StudyError::NoRule { .. }) => Ok(None),
         Err(e) => Err(e),
     }
 }
@@ -271,10 +274,11 @@ fn is_per_light(method: Method) -> bool {
 }
 
 /// The verdict for M buckets (or fitted wavelengths) from the worst ΔE00
-/// at every M (index M − 1).
+/// at every M (index M − 1). A published rule that does not exist at some
+/// M has NaN there: above budget at that M, and not judged as a larger M.
 fn bucket_verdict(worst: &[(f64, String)], m: usize, budget: f64) -> Verdict {
     let (at, cell) = worst[m - 1].clone();
-    if at > budget {
+    if at.is_nan() || at > budget {
         return Verdict::Above { worst: at, cell };
     }
     match worst[m..].iter().position(|(e, _)| *e > budget) {
@@ -353,7 +357,7 @@ impl<'a> Scene<'a> {
     }
 
     /// For M = 1 … 64, the worst ΔE00 of the published rule of `family`
-    /// for the scene's light, and where; +∞ where the rule does not exist
+    /// for the scene's light, and where; NaN where the rule does not exist
     /// (below the family's smallest M, or a Borges rule without real nodes).
     fn published_errors(&self, family: Family) -> Vec<(f64, String)> {
         (1..=MAX_M)
@@ -361,8 +365,8 @@ impl<'a> Scene<'a> {
                 let mut worst = (f64::NEG_INFINITY, String::new());
                 // One light (per-light methods are candidates for no other scene).
                 let light = self.cells[0].0;
-                let Ok(rule) = family.rule(&light.spectrum, m) else {
-                    return (f64::INFINITY, format!("no {family} rule of {m} for {}", light.name));
+                let Ok(rule) = light.published(family, m) else {
+                    return (f64::NAN, format!("no {family} rule of {m} for {}", light.name));
                 };
                 for (l, s, exact, white) in &self.cells {
                     let path = self.depth.path(&s.spectrum);
@@ -381,8 +385,8 @@ impl<'a> Scene<'a> {
         let mut worst = (f64::NEG_INFINITY, String::new());
         for (l, s, exact, white) in &self.cells {
             let p = Prefiltered::new(space, *white)?;
-            let one = p.surface(l.exact(&s.spectrum));
-            let de = perceptual::delta_e00(p.xyz(&[one; MAX_DEPTH][..self.depth.get()]), *exact, *white);
+            let de =
+                perceptual::delta_e00(p.path_xyz(l.exact(&s.spectrum), self.depth.get()), *exact, *white);
             if de > worst.0 {
                 worst = (de, format!("{} × {}", l.name, s.name));
             }

@@ -47,10 +47,8 @@ impl Candidate {
     fn prepare(self, light: &Named) -> Result<Prepared, StudyError> {
         Ok(match self {
             Candidate::Fitted(m) => Prepared::Fitted(light.rules()?.rule(m)?.clone()),
-            Candidate::Published(family, m) => Prepared::Published(family.rule(&light.spectrum, m)?),
-            Candidate::Prefiltered(space) => {
-                Prepared::Prefiltered(Prefiltered::new(space, reference::white(&light.spectrum))?)
-            }
+            Candidate::Published(family, m) => Prepared::Published(light.published(family, m)?),
+            Candidate::Prefiltered(space) => Prepared::Prefiltered(Prefiltered::new(space, light.white())?),
         })
     }
 }
@@ -84,7 +82,7 @@ impl Prepared {
         match self {
             Prepared::Fitted(rule) => rule.xyz_of_product(factors),
             Prepared::Published(rule) => rule.xyz_of_product(&factors[1..]),
-            Prepared::Prefiltered(p) => p.xyz(&[p.surface(light.exact(surface)); MAX_DEPTH][..depth.get()]),
+            Prepared::Prefiltered(p) => p.path_xyz(light.exact(surface), depth.get()),
         }
     }
 }
@@ -96,9 +94,9 @@ pub struct Row {
     pub candidate: Candidate,
     /// The path depth.
     pub depth: usize,
-    /// The largest ΔE00 over the pairs.
+    /// The largest ΔE00 over the pairs (NaN for none).
     pub worst: f64,
-    /// The mean ΔE00.
+    /// The mean ΔE00 (NaN for none).
     pub mean: f64,
     /// Pairs with ΔE00 above 1.
     pub above_one: usize,
@@ -136,11 +134,7 @@ pub fn table(
                             .map(|(s, &e)| perceptual::delta_e00(p.xyz(light, &s.spectrum, depth), e, white))
                             .collect(),
                     )),
-                    Err(StudyError::Spectra(speclab::Error::NoMass))
-                        if matches!(c, Candidate::Published(Family::Borges, _)) =>
-                    {
-                        Ok(None)
-                    }
+                    Err(StudyError::NoRule { .. }) => Ok(None),
                     Err(e) => Err(e),
                 })
                 .collect::<Result<Vec<_>, StudyError>>()
@@ -156,8 +150,8 @@ pub fn table(
             Row {
                 candidate,
                 depth: depth.get(),
-                worst: all.iter().copied().fold(0.0, f64::max),
-                mean: all.iter().sum::<f64>() / all.len().max(1) as f64,
+                worst: all.iter().copied().fold(f64::NAN, f64::max),
+                mean: all.iter().sum::<f64>() / all.len() as f64,
                 above_one: all.iter().filter(|&&d| d > 1.0).count(),
                 pairs: all.len(),
                 per_light: per_light.iter().map(|l| worst_of(&l[i])).collect(),

@@ -152,10 +152,11 @@ impl Recurrence {
         &self.b
     }
 
-    /// `p₀(t) … pₙ(t)` into `out` (`n + 1` values).
+    /// `p₀(t) … pₙ(t)` into `out` (as many as it holds, up to `n + 1`).
     pub fn values_into(&self, t: f64, out: &mut [f64]) {
-        let n = self.n().min(out.len().saturating_sub(1));
-        out[0] = 1.0 / self.mu0.sqrt();
+        let Some(first) = out.first_mut() else { return };
+        *first = 1.0 / self.mu0.sqrt();
+        let n = self.n().min(out.len() - 1);
         for k in 0..n {
             let before = if k > 0 { self.b[k].sqrt() * out[k - 1] } else { 0.0 };
             out[k + 1] = ((t - self.a[k]) * out[k] - before) / self.b[k + 1].sqrt();
@@ -240,6 +241,10 @@ mod tests {
         let mut at = [0.0; 7];
         rec.values_into(m.points()[100], &mut at);
         assert!((at[6] - p[6][100]).abs() < 1e-9 * p[6][100].abs().max(1.0));
+        let mut two = [0.0; 2];
+        rec.values_into(m.points()[100], &mut two);
+        assert_eq!(two, [at[0], at[1]]);
+        rec.values_into(0.0, &mut []);
     }
 
     #[test]

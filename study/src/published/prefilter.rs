@@ -114,6 +114,14 @@ impl Prefiltered {
         Xyz::from(mul(&self.from_space, c))
     }
 
+    /// The XYZ of a path that meets the same surface `depth` times, from
+    /// the exact XYZ of the light × that surface: `A⁻¹·(l ⊙ s^depth)`.
+    #[must_use]
+    pub fn path_xyz(&self, once: Xyz, depth: usize) -> Xyz {
+        let s = self.surface(once);
+        self.to_xyz((0..depth).fold(self.light, |acc, _| [0, 1, 2].map(|i| acc[i] * s[i])))
+    }
+
     /// The XYZ of a path through `surfaces` (their three numbers, in
     /// order): `A⁻¹·(l ⊙ s₁ ⊙ …)`.
     #[must_use]

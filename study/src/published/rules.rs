@@ -8,8 +8,10 @@
 //!   `Δ = ⌊350/(M − 1)⌋` nm from 380 nm (10 nm at M = 36, 20 nm at
 //!   M = 18); the weights are the Lagrange basis of the reflectance's
 //!   cubic interpolant integrated against `w꜀` (E2022's construction of
-//!   the E308 tables), exactly, over 380–730 nm
-//!   ([`PreparedLight::weights`]).
+//!   the E308 tables), exactly ([`PreparedLight::weights`]); where the
+//!   last sample falls short of 730 nm the last cubic is extrapolated to
+//!   730 nm and its share folded into the last four weights, as E308's end
+//!   rows absorb what lies beyond them.
 //! - **Wallis 1975** ([`Family::Wallis`]): three Gauss rules, one per
 //!   `w꜀` (n_Y ≥ n_X ≥ n_Z, summing to M).
 //! - **Meyer 1988** ([`Family::Meyer`]): one Gauss rule of M points for
@@ -17,12 +19,14 @@
 //!   nodes: Meyer's one shared set of quadrature wavelengths (his paper
 //!   chose them in an opponent space; this is the "one Gauss rule" form).
 //! - **Borges 1994** ([`Family::Borges`]): M shared nodes that make each
-//!   channel's interpolatory rule exact beyond degree M − 1: the monic
-//!   node polynomial is orthogonal, under `w꜀`, to degrees below `r꜀`,
-//!   with `r_Y ≥ r_X ≥ r_Z` summing to M ("Gauss-like rules" for several
-//!   weight functions sharing an integrand, Numer. Math. 67, 1994). A
-//!   linear system for the polynomial; its roots must be real and inside
-//!   the range, else [`Error::NoMass`] (Borges's rules need not exist).
+//!   channel's interpolatory rule exact beyond degree M − 1: the node
+//!   polynomial is orthogonal, under `w꜀`, to degrees below `r꜀`, the
+//!   `r꜀` summing to M ("Gauss-like rules" for several weight functions
+//!   sharing an integrand, Numer. Math. 67, 1994). A linear system for the
+//!   polynomial; its roots must be real and inside the range. The even
+//!   split (Y, then X, favoured for the remainder) is tried first, then
+//!   splits one degree further from even; if none has real nodes inside,
+//!   [`StudyError::NoRule`] (Borges's rules need not exist).
 //!
 //! ```
 //! use speclab::data::{lights, patches};
@@ -36,7 +40,7 @@
 //! // Wallis spends 12 wavelengths on three rules of 4: G4's Y is 25 % off.
 //! let wallis = Family::Wallis.rule(&lights::D65, 12)?.xyz_of_product(&[&patches::G4]);
 //! assert!((wallis.y - exact.y).abs() > 0.2 * exact.y);
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab_study::StudyError>(())
 //! ```
 
 use std::fmt;
@@ -45,8 +49,9 @@ use speclab::error::Error;
 use speclab::sampling::PreparedLight;
 use speclab::sampling::rule::{MAX_M, Rule};
 use speclab::spectrum::observer::xyz_bar;
-use speclab::spectrum::{Interpolation, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
+use speclab::spectrum::{Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
+use crate::StudyError;
 use crate::published::gauss::{Measure, Recurrence, to_lambda};
 use crate::published::solve::solve;
 
@@ -82,24 +87,22 @@ impl Family {
     }
 
     /// The rule of `m` wavelengths for `light`. An [`Error::Count`] for `m`
-    /// outside `min_m ..=` [`MAX_M`]; an [`Error::NoMass`] for a light the
-    /// observer cannot see, or (Borges) nodes that are not real and inside
-    /// 380–730 nm.
-    pub fn rule(self, light: &(impl Spectrum + ?Sized), m: usize) -> Result<Rule, Error> {
+    /// outside `min_m ..=` [`MAX_M`]; a [`StudyError::NoRule`] where the
+    /// rule does not exist for the light (a light the observer cannot see,
+    /// a Gauss rule of more points than its weight has support, Borges
+    /// nodes that are not real and inside 380–730 nm).
+    pub fn rule(self, light: &(impl Spectrum + ?Sized), m: usize) -> Result<Rule, StudyError> {
         if !(self.min_m()..=MAX_M).contains(&m) {
-            return Err(Error::Count {
-                what: "a published rule's wavelength count",
-                found: m,
-                min: self.min_m(),
-                max: MAX_M,
-            });
+            let what = "a published rule's wavelength count";
+            return Err(Error::Count { what, found: m, min: self.min_m(), max: MAX_M }.into());
         }
-        match self {
-            Family::Astm => astm(light, m),
+        let rule = match self {
+            Family::Astm => Some(astm(light, m)?),
             Family::Borges => borges(light, m),
             Family::Meyer => meyer(light, m),
             Family::Wallis => wallis(light, m),
-        }
+        };
+        rule.ok_or_else(|| StudyError::NoRule { family: self.to_string(), m })
     }
 }
 
@@ -120,7 +123,45 @@ fn astm(light: &(impl Spectrum + ?Sized), m: usize) -> Result<Rule, Error> {
     let step = astm_interval(m);
     let grid: Vec<f64> = (0..m).map(|i| LAMBDA_MIN + step * i as f64).collect();
     let prepared = PreparedLight::for_grid(light, &grid, Interpolation::Cubic)?;
-    Rule::new(grid, prepared.weights().clone())
+    let mut weights = prepared.weights().clone();
+    let last = &grid[m - 4..];
+    for (j, share) in tail(light, last).into_iter().enumerate() {
+        (0..3).for_each(|c| weights[c][m - 4 + j] += share[c]);
+    }
+    Rule::new(grid, weights)
+}
+
+/// Gauss–Legendre's 4 points on [−1, 1] and their weights (exact to
+/// degree 7: a cubic × a linear light × a cubic observer on a 1 nm
+/// segment, whose breaks lie on whole nanometres).
+const GAUSS_4: [(f64, f64); 4] = [
+    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+    (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+    (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+];
+
+/// `∫ ℓⱼ·L·c̄` from the last sample to 730 nm, for the Lagrange basis `ℓⱼ`
+/// of the cubic through the last four samples `nodes`: what extrapolating
+/// the reflectance's last cubic adds to each of their weights.
+fn tail(light: &(impl Spectrum + ?Sized), nodes: &[f64]) -> [[f64; 3]; 4] {
+    let mut out = [[0.0; 3]; 4];
+    let mut from = nodes[3];
+    while from < LAMBDA_MAX {
+        let to = (from.floor() + 1.0).min(LAMBDA_MAX);
+        let (mid, half) = (0.5 * (from + to), 0.5 * (to - from));
+        for (x, w) in GAUSS_4 {
+            let l = mid + half * x;
+            let (weight, bar) = (w * half * light.eval(l), xyz_bar(l));
+            for (j, out) in out.iter_mut().enumerate() {
+                let basis: f64 =
+                    (0..4).filter(|&k| k != j).map(|k| (l - nodes[k]) / (nodes[j] - nodes[k])).product();
+                (0..3).for_each(|c| out[c] += weight * basis * bar[c]);
+            }
+        }
+        from = to;
+    }
+    out
 }
 
 /// The light's weight for each channel, and for their sum, as measures.
@@ -135,11 +176,11 @@ fn split(m: usize) -> [usize; 3] {
     [q + usize::from(r >= 2), q + usize::from(r >= 1), q]
 }
 
-fn wallis(light: &(impl Spectrum + ?Sized), m: usize) -> Result<Rule, Error> {
+fn wallis(light: &(impl Spectrum + ?Sized), m: usize) -> Option<Rule> {
     let (mut lambda, mut weights) = (Vec::new(), [Vec::new(), Vec::new(), Vec::new()]);
     let measures = measures(light);
     for (c, n) in split(m).into_iter().enumerate() {
-        let (rec, _) = measures[c].orthonormal(n).ok_or(Error::NoMass)?;
+        let (rec, _) = measures[c].orthonormal(n)?;
         let (t, w) = rec.gauss();
         for (t, w) in t.into_iter().zip(w) {
             lambda.push(to_lambda(t));
@@ -148,32 +189,32 @@ fn wallis(light: &(impl Spectrum + ?Sized), m: usize) -> Result<Rule, Error> {
             }
         }
     }
-    Rule::new(lambda, weights)
+    Rule::new(lambda, weights).ok()
 }
 
-fn meyer(light: &(impl Spectrum + ?Sized), m: usize) -> Result<Rule, Error> {
+fn meyer(light: &(impl Spectrum + ?Sized), m: usize) -> Option<Rule> {
     let [.., sum] = measures(light);
-    let (rec, _) = sum.orthonormal(m).ok_or(Error::NoMass)?;
+    let (rec, _) = sum.orthonormal(m)?;
     let (t, w) = rec.gauss();
     let lambda: Vec<f64> = t.into_iter().map(to_lambda).collect();
     let weights = [0, 1, 2].map(|c| {
         lambda.iter().zip(&w).map(|(&l, w)| w * xyz_bar(l)[c] / xyz_bar(l).iter().sum::<f64>()).collect()
     });
-    Rule::new(lambda, weights)
+    Rule::new(lambda, weights).ok()
 }
 
-fn borges(light: &(impl Spectrum + ?Sized), m: usize) -> Result<Rule, Error> {
+fn borges(light: &(impl Spectrum + ?Sized), m: usize) -> Option<Rule> {
     let [x, y, z, sum] = measures(light);
-    let (rec, p) = sum.orthonormal(m).ok_or(Error::NoMass)?;
-    let nodes = splits(m).into_iter().find_map(|r| shared_nodes(&rec, &p, [&x, &y, &z], r, sum.points()));
-    let nodes = nodes.ok_or(Error::NoMass)?;
+    let (rec, p) = sum.orthonormal(m)?;
+    let nodes = splits(m).into_iter().find_map(|r| shared_nodes(&rec, &p, [&x, &y, &z], r, sum.points()))?;
     let row = |w: &Measure| interpolatory(&rec, &p, w, &nodes);
     let weights = [row(&x)?, row(&y)?, row(&z)?];
-    Rule::new(nodes.iter().map(|&t| to_lambda(t)).collect(), weights)
+    Rule::new(nodes.iter().map(|&t| to_lambda(t)).collect(), weights).ok()
 }
 
-/// The ways of sharing `m` extra degrees among X, Y and Z, most balanced
-/// first (Y, then X, favoured on ties): Borges's rules exist for some and
+/// The ways of sharing `m` extra degrees among X, Y and Z, the even
+/// split first (Y, then X, favoured on ties), then those one degree
+/// further from it (Σ(3·r꜀ − m)² ≤ 54): Borges's rules exist for some and
 /// not others.
 fn splits(m: usize) -> Vec<[usize; 3]> {
     let mut all: Vec<[usize; 3]> =
@@ -181,11 +222,12 @@ fn splits(m: usize) -> Vec<[usize; 3]> {
     let spread = |r: &[usize; 3]| r.iter().map(|&k| (3 * k).abs_diff(m).pow(2)).sum::<usize>();
     let order = |r: &[usize; 3]| (spread(r), std::cmp::Reverse(r[1]), std::cmp::Reverse(r[0]));
     all.sort_by_key(order);
-    all.retain(|r| spread(r) <= 54); // no channel more than two degrees from an even share
+    all.retain(|r| spread(r) <= 54);
     all
 }
 
-/// The roots of the monic node polynomial `ω = p_m + Σ_{j<m} α_j p_j`
+/// The roots of the node polynomial `ω = p_m + Σ_{j<m} α_j p_j` (a
+/// multiple of the monic one)
 /// with `∫ ω·p_k·w꜀ = 0` for `k < r꜀`, if all `m` are real and inside.
 fn shared_nodes(
     rec: &Recurrence,
@@ -213,7 +255,7 @@ fn shared_nodes(
 
 /// The weights of the interpolatory rule on `nodes` for the measure `w`:
 /// exact for polynomials below degree `nodes.len()`.
-fn interpolatory(rec: &Recurrence, p: &[Vec<f64>], w: &Measure, nodes: &[f64]) -> Result<Vec<f64>, Error> {
+fn interpolatory(rec: &Recurrence, p: &[Vec<f64>], w: &Measure, nodes: &[f64]) -> Option<Vec<f64>> {
     let m = nodes.len();
     let mut values = vec![0.0; rec.n() + 1];
     let mut rows = vec![vec![0.0; m]; m];
@@ -222,7 +264,7 @@ fn interpolatory(rec: &Recurrence, p: &[Vec<f64>], w: &Measure, nodes: &[f64]) -
         (0..m).for_each(|k| rows[k][i] = values[k]);
     }
     let moments = (0..m).map(|k| w.integrate(&p[k])).collect();
-    solve(rows, moments).ok_or(Error::NoMass)
+    solve(rows, moments)
 }
 
 /// The `m` roots of `f` between consecutive points, by bisection; `None`
