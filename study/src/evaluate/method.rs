@@ -122,6 +122,13 @@ impl Method {
     /// The names of [`Method::ALL`], in its order.
     pub const NAMES: [&str; 6] = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];
 
+    /// True for the published rules and spectral prefiltering
+    /// ([`Method::PUBLISHED`]).
+    #[must_use]
+    pub fn is_published(self) -> bool {
+        matches!(self, Method::Published { .. } | Method::Prefiltered { .. })
+    }
+
     /// The published rules and spectral prefiltering, in that order.
     pub const PUBLISHED: [Method; 7] = [
         Method::Published { family: Family::Astm },

@@ -137,7 +137,7 @@ pub struct Plan {
 }
 
 /// Plans `lights × surfaces` for `request`, with every candidate's cost
-/// measured now (see [`costs`]). Errors for an empty scene or a budget that
+/// measured now ([`crate::planning::cost::measure`]). Errors for an empty scene or a budget that
 /// is not finite and positive.
 pub fn plan(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<Plan, StudyError> {
     validate(lights, surfaces, request)?;
@@ -146,7 +146,7 @@ pub fn plan(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<P
     // chosen (biased, and built for one light).
     let per_light = request.allow_bias && lights.len() == 1;
     for config in configs() {
-        if per_light || !is_per_light(config.method) {
+        if per_light || !config.method.is_published() {
             measured.extend(measured_cost(config, &lights[0], &surfaces[0])?);
         }
     }
@@ -164,17 +164,6 @@ fn validate(lights: &[Named], surfaces: &[Named], request: &Request) -> Result<(
     Ok(())
 }
 
-/// Every candidate configuration with its cost measured on `light ×
-/// surface` (the reference excepted), in increasing cost per estimate.
-pub fn costs(light: &Named, surface: &Named) -> Result<Vec<(Config, Cost)>, StudyError> {
-    let mut out = Vec::new();
-    for config in configs() {
-        out.extend(measured_cost(config, light, surface)?);
-    }
-    out.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
-    Ok(out)
-}
-
 /// `config` with its cost on `light × surface`; none for a Borges rule
 /// without real nodes for this light.
 fn measured_cost(
@@ -189,7 +178,7 @@ fn measured_cost(
     }
 }
 
-/// [`plan`] with costs measured before (by [`costs`]): the same costs give
+/// [`plan`] with costs measured before: the same costs give
 /// the same plan for any seed whose trials agree, which timing noise
 /// would otherwise blur.
 pub fn plan_with_costs(
@@ -202,7 +191,7 @@ pub fn plan_with_costs(
     let scene = Scene::new(lights, surfaces, request.depth);
     let mut candidates = costs.to_vec();
     // A published rule or a prefiltering is built for one light.
-    candidates.retain(|(c, _)| lights.len() == 1 || !is_per_light(c.method));
+    candidates.retain(|(c, _)| lights.len() == 1 || !c.method.is_published());
     candidates.sort_by(|a, b| a.1.per_estimate_ns.total_cmp(&b.1.per_estimate_ns));
     let (center, boxed) =
         (scene.bucket_errors(BucketRule::Center)?, scene.bucket_errors(BucketRule::BoxAverage)?);
@@ -265,12 +254,6 @@ fn configs() -> Vec<Config> {
         out.extend(method.counts(CONVERGENCE_MAX_N).into_iter().map(|m| Config::new(method, count(m))));
     }
     out
-}
-
-/// True for the methods built for one light: the published rules and
-/// prefiltering.
-fn is_per_light(method: Method) -> bool {
-    matches!(method, Method::Published { .. } | Method::Prefiltered { .. })
 }
 
 /// The verdict for M buckets (or fitted wavelengths) from the worst ΔE00

@@ -11,3 +11,4 @@ mod stability;
 mod threads;
 mod unbiased;
 mod viewing;
+mod wiring;
