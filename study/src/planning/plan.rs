@@ -37,6 +37,7 @@
 //! # Ok::<(), speclab_study::StudyError>(())
 //! ```
 
+use std::collections::HashMap;
 use std::num::NonZeroUsize;
 
 use crate::StudyError;
@@ -197,7 +198,7 @@ pub fn plan_with_costs(
         (scene.bucket_errors(BucketRule::Center)?, scene.bucket_errors(BucketRule::BoxAverage)?);
     // Fitted rules are fitted (every M) only if one is tried.
     let mut fitted: Option<Vec<(f64, String)>> = None;
-    let mut published: [Option<Vec<(f64, String)>>; 4] = Default::default();
+    let mut published: HashMap<Family, Vec<(f64, String)>> = HashMap::new();
     let mut plan = Plan { chosen: None, runners_up: Vec::new(), others: Vec::new() };
     for (config, cost) in candidates {
         let m = config.count.get();
@@ -221,8 +222,7 @@ pub fn plan_with_costs(
                 bucket_verdict(&boxed, config.count.get(), request.budget)
             }
             Method::Published { family } => {
-                let i = Family::ALL.iter().position(|&f| f == family).unwrap_or(0);
-                let worst = published[i].get_or_insert_with(|| scene.published_errors(family));
+                let worst = published.entry(family).or_insert_with(|| scene.published_errors(family));
                 bucket_verdict(worst, config.count.get(), request.budget)
             }
             Method::Prefiltered { space } => {
