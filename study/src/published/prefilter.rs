@@ -129,3 +129,27 @@ impl Prefiltered {
         self.to_xyz(surfaces.iter().fold(self.light, |acc, s| [0, 1, 2].map(|i| acc[i] * s[i])))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use speclab::data::{lights, patches};
+    use speclab::sampling::reference;
+
+    #[test]
+    fn a_path_through_two_surfaces_multiplies_their_numbers() {
+        // In XYZ a surface's numbers are XYZ(L·ρ) ⊘ XYZ(L): a path through
+        // two gives XYZ(L·ρ₁) ⊙ XYZ(L·ρ₂) ⊘ XYZ(L).
+        let white = reference::white(&lights::F11);
+        let p = Prefiltered::new(Space::Xyz, white).unwrap();
+        let (one, two) =
+            (reference::xyz(&lights::F11, &patches::G4), reference::xyz(&lights::F11, &patches::J4));
+        let ours = p.xyz(&[p.surface(one), p.surface(two)]).to_array();
+        let hand = [0, 1, 2].map(|c| one.to_array()[c] * two.to_array()[c] / white.to_array()[c]);
+        for (o, h) in ours.into_iter().zip(hand) {
+            assert!((o - h).abs() <= 1e-12 * h.abs(), "{o} against {h}");
+        }
+        let once = p.path_xyz(one, 1);
+        assert!((once.y - one.y).abs() <= 1e-12 * one.y && (once.z - one.z).abs() <= 1e-12 * one.z);
+    }
+}
