@@ -118,6 +118,16 @@ pub enum Error {
         /// The number of wavelengths.
         expected: usize,
     },
+    /// A surface handed to a fit (`FittedRules::with_surfaces`) whose value
+    /// is not a finite number at some wavelength.
+    Surface {
+        /// Which surface of the list.
+        index: usize,
+        /// Where, nm.
+        lambda: f64,
+        /// The value found there.
+        value: f64,
+    },
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
         /// What was looked up, e.g. `a built-in light`.
@@ -188,6 +198,9 @@ impl fmt::Display for Error {
             Error::RuleShape { row, len, expected } => {
                 let name = ["X", "Y", "Z"].get(*row).copied().unwrap_or("?");
                 write!(f, "rule weights for {name}: expected {expected} (one per wavelength), found {len}")
+            }
+            Error::Surface { index, lambda, value } => {
+                write!(f, "surface {index}: expected a finite reflectance, found {value} at {lambda} nm")
             }
             Error::UnknownName { what, expected, found } if expected.len() <= 12 => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))

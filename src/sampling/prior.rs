@@ -99,12 +99,12 @@ pub fn prior() -> &'static [PriorReflectance] {
     })
 }
 
-/// How many products of two, three and four reflectances [`paths`] adds.
+/// How many products of two, three and four reflectances [`draw_paths`] adds.
 pub const PATHS: [usize; 3] = [256, 128, 128];
 
-/// A path through the prior: the product of one to four of its
-/// reflectances (indices into [`prior`]), what a path of that many bounces
-/// reflects.
+/// A path through a fit's reflectances (the prior's or a scene's): the
+/// product of one to four of them, by index, what a path of that many
+/// bounces reflects.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PriorPath {
     members: [usize; 4],
@@ -112,45 +112,36 @@ pub struct PriorPath {
 }
 
 impl PriorPath {
-    /// The reflectances multiplied, as indices into [`prior`].
+    /// The reflectances multiplied, as indices into the fit's list.
     #[must_use]
     pub fn members(&self) -> &[usize] {
         &self.members[..self.depth]
     }
 }
 
-impl Spectrum for PriorPath {
-    fn eval(&self, lambda: f64) -> f64 {
-        let p = prior();
-        self.members().iter().map(|&i| p[i].eval(lambda)).product()
-    }
-}
-
-/// The rows rules are fitted over: every reflectance of the prior alone,
-/// then [`PATHS`] products of 2, 3 and 4 members drawn uniformly (SplitMix64
-/// from `PRIOR_SEED + 1`), so that one rule serves paths of every depth.
-#[must_use]
-pub fn paths() -> &'static [PriorPath] {
-    static PATHS_: OnceLock<Vec<PriorPath>> = OnceLock::new();
-    PATHS_.get_or_init(|| {
-        let mut rng = SplitMix(SplitMix64::new(PRIOR_SEED.wrapping_add(1)));
-        let singles = (0..PRIOR_SIZE).map(|i| PriorPath { members: [i, 0, 0, 0], depth: 1 });
-        let mut out: Vec<PriorPath> = singles.collect();
-        for (depth, &count) in (2..).zip(&PATHS) {
-            for _ in 0..count {
-                let members =
-                    [(); 4].map(|()| (rng.uniform(0.0, PRIOR_SIZE as f64) as usize).min(PRIOR_SIZE - 1));
-                out.push(PriorPath { members, depth });
-            }
+/// The rows rules are fitted over, for `n` reflectances (the prior's or a
+/// scene's): each alone, then [`PATHS`] products of 2, 3 and 4 of them
+/// drawn uniformly (SplitMix64 from `PRIOR_SEED + 1`), so that one rule
+/// serves paths of every depth.
+pub(crate) fn draw_paths(n: usize) -> Vec<PriorPath> {
+    let mut rng = SplitMix(SplitMix64::new(PRIOR_SEED.wrapping_add(1)));
+    let singles = (0..n).map(|i| PriorPath { members: [i, 0, 0, 0], depth: 1 });
+    let mut out: Vec<PriorPath> = singles.collect();
+    for (depth, &count) in (2..).zip(&PATHS) {
+        for _ in 0..count {
+            let members = [(); 4].map(|()| (rng.uniform(0.0, n as f64) as usize).min(n.saturating_sub(1)));
+            out.push(PriorPath { members, depth });
         }
-        out
-    })
+    }
+    out
 }
 
 /// The prior's mean reflectance, `(1/N)·Σ rᵢ(λ)`.
+#[cfg(test)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct PriorMean;
 
+#[cfg(test)]
 impl Spectrum for PriorMean {
     fn eval(&self, lambda: f64) -> f64 {
         let p = prior();

@@ -3,19 +3,25 @@
 use std::io::{self, Write};
 
 use speclab_study::experiments::rules::{self, DepthRow, RuleRow};
+use speclab_study::published::rules::Family;
 
 /// A Markdown table of `rows` at each M of `ms`: the worst ΔE00 over the
 /// surfaces (called `surfaces` in the first column) of the fitted rule,
-/// and of centre and box buckets with their stable errors.
+/// and of centre and box buckets with their stable errors; then each
+/// published rule's worst and stable error (over the M at which it
+/// exists), `—` where it has no rule of M.
 pub fn rules_table(out: &mut impl Write, surfaces: &str, rows: &[RuleRow], ms: &[usize]) -> io::Result<()> {
-    writeln!(
+    write!(
         out,
         "| surfaces | light | M | fitted | fitted, stable | centre | centre, stable | box | box, stable |"
     )?;
-    writeln!(out, "|---|---|---:|---:|---:|---:|---:|---:|---:|")?;
+    for family in Family::NAMES {
+        write!(out, " {family} (stable) |")?;
+    }
+    writeln!(out, "\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")?;
     for row in rows.iter().filter(|r| ms.contains(&r.m)) {
         let stable = |pick: fn(&RuleRow) -> f64| rules::stable(rows, pick, row.m);
-        writeln!(
+        write!(
             out,
             "| {surfaces} | {} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} |",
             row.light,
@@ -27,6 +33,17 @@ pub fn rules_table(out: &mut impl Write, surfaces: &str, rows: &[RuleRow], ms: &
             row.boxed,
             stable(|r| r.boxed)
         )?;
+        for (i, worst) in row.published.iter().enumerate() {
+            match worst {
+                Some(w) => write!(
+                    out,
+                    " {w:.2} ({:.2}) |",
+                    rules::stable(rows, |r| r.published[i].unwrap_or(0.0), row.m)
+                )?,
+                None => write!(out, " — |")?,
+            }
+        }
+        writeln!(out)?;
     }
     Ok(())
 }

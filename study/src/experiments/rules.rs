@@ -1,6 +1,8 @@
 //! Fixed wavelength rules side by side: for each M, the worst ΔE00 over a
-//! set of surfaces of the rule fitted to the light, centre buckets and box
-//! buckets (all deterministic), with the *stable* error of each (the
+//! set of surfaces of the rule fitted to the light, centre buckets, box
+//! buckets and the published rules of M wavelengths for the light
+//! (`published::rules`: ASTM E308, Borges, Meyer, Wallis; all
+//! deterministic), with the *stable* error of each (the
 //! largest at M or any larger M up to 64); and, per light and path depth,
 //! the smallest M each needs to stay within a budget beside the smallest n
 //! hero needs.
@@ -24,6 +26,7 @@ use crate::evaluate::perceptual;
 use crate::evaluate::scene::{Depth, Named};
 use crate::evaluate::trials;
 use crate::experiments::convergence::CONVERGENCE_MAX_N;
+use crate::published::rules::Family;
 use speclab::sampling::buckets::BucketRule;
 use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::fitted::FittedRules;
@@ -45,11 +48,24 @@ pub struct RuleRow {
     pub center: f64,
     /// M box buckets.
     pub boxed: f64,
+    /// Each published rule of M wavelengths, in [`Family::ALL`]'s order
+    /// (`None` where the family has no rule of M for the light).
+    pub published: [Option<f64>; 4],
 }
 
 /// Every M from 1 to 64 under `light`, over `surfaces` to the power
 /// `depth` (an error for no surfaces).
 pub fn by_m(light: &Named, surfaces: &[Named], depth: Depth) -> Result<Vec<RuleRow>, StudyError> {
+    rows_by_m(light, surfaces, depth, true)
+}
+
+/// [`by_m`], with the published rules' columns or without them (`None`).
+fn rows_by_m(
+    light: &Named,
+    surfaces: &[Named],
+    depth: Depth,
+    published: bool,
+) -> Result<Vec<RuleRow>, StudyError> {
     if surfaces.is_empty() {
         return Err(StudyError::EmptyScene);
     }
@@ -62,6 +78,8 @@ pub fn by_m(light: &Named, surfaces: &[Named], depth: Depth) -> Result<Vec<RuleR
             let (mut fitted, mut center, mut boxed) = (0.0f64, 0.0f64, 0.0f64);
             let rule = fits.rule(m)?;
             let buckets = [Rule::buckets(m, BucketRule::Center)?, Rule::buckets(m, BucketRule::BoxAverage)?];
+            let published = if published { published_rules(light, m)? } else { [None, None, None, None] };
+            let mut published_worst = published.clone().map(|r| r.map(|_| 0.0f64));
             for (s, &exact) in surfaces.iter().zip(&exact) {
                 let path = depth.path(&s.spectrum);
                 let mut factors: Vec<&dyn Spectrum> = vec![l];
@@ -71,10 +89,33 @@ pub fn by_m(light: &Named, surfaces: &[Named], depth: Depth) -> Result<Vec<RuleR
                 for (b, worst) in buckets.iter().zip([&mut center, &mut boxed]) {
                     *worst = worst.max(de(b.xyz_of_product(&factors)));
                 }
+                // A published rule's weights hold the light: the path alone.
+                for (r, worst) in published.iter().zip(&mut published_worst) {
+                    if let (Some(r), Some(worst)) = (r, worst) {
+                        *worst = worst.max(de(r.xyz_of_product(&factors[1..])));
+                    }
+                }
             }
-            Ok(RuleRow { light: light.name.clone(), m, fitted, center, boxed })
+            Ok(RuleRow { light: light.name.clone(), m, fitted, center, boxed, published: published_worst })
         })
         .collect()
+}
+
+/// Each family's rule of `m` wavelengths for `light`, `None` where there
+/// is none (fewer wavelengths than the family takes, or no rule of `m` for
+/// the light).
+fn published_rules(light: &Named, m: usize) -> Result<[Option<Rule>; 4], StudyError> {
+    let rule = |family: Family| -> Result<Option<Rule>, StudyError> {
+        if m < family.min_m() {
+            return Ok(None);
+        }
+        match light.published(family, m) {
+            Ok(r) => Ok(Some(r)),
+            Err(StudyError::NoRule { .. }) => Ok(None),
+            Err(e) => Err(e),
+        }
+    };
+    Ok([rule(Family::ALL[0])?, rule(Family::ALL[1])?, rule(Family::ALL[2])?, rule(Family::ALL[3])?])
 }
 
 /// The stable error at `m` of the rule `pick` reads: the largest over
@@ -142,7 +183,7 @@ pub fn needs(
     seed: u64,
 ) -> Result<DepthRow, StudyError> {
     let hero = Method::HERO.with_sampling(Sampling { pdf: PdfKind::Uniform, strata: Strata::Jittered });
-    let rows = by_m(light, surfaces, depth)?;
+    let rows = rows_by_m(light, surfaces, depth, false)?;
     let mut hero_n = None;
     'counts: for n in hero.counts(CONVERGENCE_MAX_N) {
         let count = NonZeroUsize::new(n).unwrap_or(NonZeroUsize::MIN);

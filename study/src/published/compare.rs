@@ -21,6 +21,7 @@ use std::fmt;
 use rayon::prelude::*;
 
 use speclab::color::Xyz;
+use speclab::sampling::fitted::FittedRules;
 use speclab::sampling::reference;
 use speclab::sampling::rule::Rule;
 use speclab::spectrum::{Spectrum, TabulatedSpectrum};
@@ -36,6 +37,10 @@ use crate::published::rules::{Family, astm_interval};
 pub enum Candidate {
     /// speclab's rule of M wavelengths fitted to the light.
     Fitted(usize),
+    /// The rule of M wavelengths fitted to the light over the very
+    /// surfaces it is judged on (`FittedRules::with_surfaces`): what a
+    /// fitted rule of M can reach on them at best, a bound and not a method.
+    Oracle(usize),
     /// A published rule of M wavelengths.
     Published(Family, usize),
     /// Spectral prefiltering in a space (three numbers).
@@ -43,10 +48,28 @@ pub enum Candidate {
 }
 
 impl Candidate {
-    /// Its colour of light × `surface`^depth, ready for one light.
-    fn prepare(self, light: &Named) -> Result<Prepared, StudyError> {
+    /// Its colour of light × `surface`^depth, ready for one light; `oracle`
+    /// keeps the light's rules fitted over `surfaces` once built.
+    fn prepare(
+        self,
+        light: &Named,
+        surfaces: &[Named],
+        oracle: &mut Option<FittedRules>,
+    ) -> Result<Prepared, StudyError> {
         Ok(match self {
             Candidate::Fitted(m) => Prepared::Fitted(light.rules()?.rule(m)?.clone()),
+            Candidate::Oracle(m) => {
+                let rules = match oracle.take() {
+                    Some(rules) => rules,
+                    None => {
+                        let own: Vec<&TabulatedSpectrum> = surfaces.iter().map(|s| &s.spectrum).collect();
+                        FittedRules::with_surfaces(&[&light.spectrum], &own)?
+                    }
+                };
+                let rule = rules.rule(m)?.clone();
+                *oracle = Some(rules);
+                Prepared::Fitted(rule)
+            }
             Candidate::Published(family, m) => Prepared::Published(light.published(family, m)?),
             Candidate::Prefiltered(space) => Prepared::Prefiltered(Prefiltered::new(space, light.white())?),
         })
@@ -54,11 +77,12 @@ impl Candidate {
 }
 
 impl fmt::Display for Candidate {
-    /// `fitted`, `astm` (with its interval: `astm-10nm`), `borges`,
+    /// `fitted`, `oracle`, `astm` (with its interval: `astm-10nm`), `borges`,
     /// `meyer`, `wallis`, `prefilter-xyz` / `-srgb` / `-sharp`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Candidate::Fitted(_) => f.write_str("fitted"),
+            Candidate::Oracle(_) => f.write_str("oracle"),
             Candidate::Published(Family::Astm, m) => write!(f, "astm-{}nm", astm_interval(*m)),
             Candidate::Published(family, _) => family.fmt(f),
             Candidate::Prefiltered(space) => write!(f, "prefilter-{space}"),
@@ -124,9 +148,10 @@ pub fn table(
         .map(|light| {
             let white = reference::white(&light.spectrum);
             let exact: Vec<Xyz> = surfaces.iter().map(|s| light.exact_at(depth, &s.spectrum)).collect();
+            let mut oracle = None;
             candidates
                 .iter()
-                .map(|c| match c.prepare(light) {
+                .map(|c| match c.prepare(light, surfaces, &mut oracle) {
                     Ok(p) => Ok(Some(
                         surfaces
                             .iter()

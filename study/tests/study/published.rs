@@ -279,3 +279,39 @@ fn the_table_keeps_lights_without_a_borges_rule_and_counts_pairs_above_one() {
     );
     assert!(compare::table(&[black], &surfaces, &[Candidate::Fitted(6)], Depth::ONE).is_err());
 }
+
+/// The oracle's rule is fitted to each light over the very surfaces the
+/// table judges: each light's worst is that of
+/// `FittedRules::with_surfaces(&[light], surfaces)` computed by hand, and
+/// it is not the rule fitted to the prior.
+#[test]
+fn the_oracle_is_fitted_to_the_surfaces_it_is_judged_on() {
+    use speclab::sampling::fitted::FittedRules;
+    use speclab_study::evaluate::perceptual::delta_e00;
+    let lights = [Named::from(Light::F11), Named::from(Light::A)];
+    let surfaces = scene::builtin_surfaces();
+    let rows = compare::table(&lights, &surfaces, &[Candidate::Oracle(4), Candidate::Fitted(4)], Depth::ONE)
+        .unwrap();
+    assert_eq!(rows[0].candidate.to_string(), "oracle");
+    for (i, light) in lights.iter().enumerate() {
+        let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
+        let rules = FittedRules::with_surfaces(&[&light.spectrum], &own).unwrap();
+        let rule = rules.rule(4).unwrap();
+        let white = reference::white(&light.spectrum);
+        let worst = own
+            .iter()
+            .map(|&s| {
+                let got = rule.xyz_of_product(&[&light.spectrum, s]);
+                delta_e00(got, reference::xyz(&light.spectrum, s), white)
+            })
+            .fold(0.0, f64::max);
+        assert!(
+            (rows[0].per_light[i] - worst).abs() <= 1e-12,
+            "{}: {} vs {worst}",
+            light.name,
+            rows[0].per_light[i]
+        );
+        // Fitted to these six, it serves them better than the prior's rule.
+        assert!(rows[0].per_light[i] < rows[1].per_light[i], "{}", light.name);
+    }
+}
