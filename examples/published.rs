@@ -77,11 +77,15 @@ fn report(depths: &[usize]) -> Result<String, StudyError> {
     for &d in depths {
         let depth = Depth::new(d)?;
         w(&mut out, format!("\n## Depth {d}: {} lights × {} reflectances\n", lights.len(), surfaces.len()))?;
-        w(&mut out, "| M | fitted | borges | meyer | wallis | astm (interval) | oracle |".into())?;
-        w(&mut out, "|---:|---|---|---|---|---|---|".into())?;
+        w(
+            &mut out,
+            "| M | fitted | borges | meyer | wallis | astm (interval) | oracle | oracle-minimax |".into(),
+        )?;
+        w(&mut out, "|---:|---|---|---|---|---|---|---|".into())?;
         let mut by_m = Vec::new();
         for m in MS {
-            let mut candidates = vec![Candidate::Fitted(m), Candidate::Oracle(m)];
+            let mut candidates =
+                vec![Candidate::Fitted(m), Candidate::Oracle(m), Candidate::OracleMinimax(m)];
             candidates.extend(Family::ALL.map(|f| Candidate::Published(f, m)).into_iter().filter(
                 |c| match c {
                     Candidate::Published(f, m) => *m >= f.min_m(),
@@ -90,19 +94,20 @@ fn report(depths: &[usize]) -> Result<String, StudyError> {
             ));
             let rows = compare::table(&lights, &surfaces, &candidates, depth)?;
             let cell = |name: &str| {
-                rows.iter().find(|r| r.candidate.to_string().starts_with(name)).map_or("–".into(), summary)
+                rows.iter().find(|r| r.candidate.to_string() == name).map_or("–".into(), summary)
             };
             let astm = rows.iter().find(|r| matches!(r.candidate, Candidate::Published(Family::Astm, _)));
             let astm = astm.map_or("–".into(), |r| format!("{} ({})", summary(r), r.candidate));
             w(
                 &mut out,
                 format!(
-                    "| {m} | {} | {} | {} | {} | {astm} | {} |",
+                    "| {m} | {} | {} | {} | {} | {astm} | {} | {} |",
                     cell("fitted"),
                     cell("borges"),
                     cell("meyer"),
                     cell("wallis"),
-                    cell("oracle")
+                    cell("oracle"),
+                    cell("oracle-minimax")
                 ),
             )?;
             by_m.push((m, rows));
@@ -135,9 +140,16 @@ fn per_light(lights: &[Named], by_m: &[(usize, Vec<Row>)], out: &mut String) {
     };
     let fitted = |m| row(m, &|c| matches!(c, Candidate::Fitted(_)));
     let oracle = |m| row(m, &|c| matches!(c, Candidate::Oracle(_)));
+    let minimax = |m| row(m, &|c| matches!(c, Candidate::OracleMinimax(_)));
     let astm = |m| row(m, &|c| matches!(c, Candidate::Published(Family::Astm, _)));
-    for (fm, am, rule) in [(10, 18, "fitted"), (12, 36, "fitted"), (10, 18, "oracle"), (12, 36, "oracle")] {
-        let f = if rule == "fitted" { fitted(fm) } else { oracle(fm) };
+    let ways = [(10, 18, "fitted"), (12, 36, "fitted"), (10, 18, "oracle"), (12, 36, "oracle")];
+    let ways = ways.into_iter().chain([(10, 18, "oracle-minimax"), (12, 36, "oracle-minimax")]);
+    for (fm, am, rule) in ways {
+        let f = match rule {
+            "fitted" => fitted(fm),
+            "oracle" => oracle(fm),
+            _ => minimax(fm),
+        };
         let (Some(f), Some(a)) = (f, astm(am)) else { continue };
         let losses: Vec<String> = lights
             .iter()

@@ -29,8 +29,12 @@ use speclab::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::StudyError;
 use crate::evaluate::perceptual;
 use crate::evaluate::scene::{Depth, MAX_DEPTH, Named};
+use crate::published::minimax::minimax;
 use crate::published::prefilter::{Prefiltered, Space};
 use crate::published::rules::{Family, astm_interval};
+
+/// Lawson steps of `oracle-minimax`.
+const MINIMAX_STEPS: usize = 100;
 
 /// A way of computing a colour with few numbers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -41,6 +45,10 @@ pub enum Candidate {
     /// surfaces it is judged on (`FittedRules::with_surfaces`): what a
     /// fitted rule of M can reach on them at best, a bound and not a method.
     Oracle(usize),
+    /// The oracle's wavelengths with weights that minimise the worst ΔE00
+    /// over the same surfaces at depth 1 ([`minimax`]): what weights alone
+    /// can do there, a bound and not a method.
+    OracleMinimax(usize),
     /// A published rule of M wavelengths.
     Published(Family, usize),
     /// Spectral prefiltering in a space (three numbers).
@@ -58,17 +66,20 @@ impl Candidate {
     ) -> Result<Prepared, StudyError> {
         Ok(match self {
             Candidate::Fitted(m) => Prepared::Fitted(light.rules()?.rule(m)?.clone()),
-            Candidate::Oracle(m) => {
+            Candidate::Oracle(m) | Candidate::OracleMinimax(m) => {
+                let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
                 let rules = match oracle.take() {
                     Some(rules) => rules,
-                    None => {
-                        let own: Vec<&TabulatedSpectrum> = surfaces.iter().map(|s| &s.spectrum).collect();
-                        FittedRules::with_surfaces(&[&light.spectrum], &own)?
-                    }
+                    None => FittedRules::with_surfaces(&[&light.spectrum], &own)?,
                 };
                 let rule = rules.rule(m)?.clone();
                 *oracle = Some(rules);
-                Prepared::Fitted(rule)
+                match self {
+                    Candidate::OracleMinimax(_) => {
+                        Prepared::Fitted(minimax(&light.spectrum, &rule, &own, MINIMAX_STEPS)?)
+                    }
+                    _ => Prepared::Fitted(rule),
+                }
             }
             Candidate::Published(family, m) => Prepared::Published(light.published(family, m)?),
             Candidate::Prefiltered(space) => Prepared::Prefiltered(Prefiltered::new(space, light.white())?),
@@ -77,12 +88,13 @@ impl Candidate {
 }
 
 impl fmt::Display for Candidate {
-    /// `fitted`, `oracle`, `astm` (with its interval: `astm-10nm`), `borges`,
+    /// `fitted`, `oracle`, `oracle-minimax`, `astm` (with its interval: `astm-10nm`), `borges`,
     /// `meyer`, `wallis`, `prefilter-xyz` / `-srgb` / `-sharp`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Candidate::Fitted(_) => f.write_str("fitted"),
             Candidate::Oracle(_) => f.write_str("oracle"),
+            Candidate::OracleMinimax(_) => f.write_str("oracle-minimax"),
             Candidate::Published(Family::Astm, m) => write!(f, "astm-{}nm", astm_interval(*m)),
             Candidate::Published(family, _) => family.fmt(f),
             Candidate::Prefiltered(space) => write!(f, "prefilter-{space}"),

@@ -31,6 +31,7 @@
 pub mod compare;
 pub mod gauss;
 pub mod held_apart;
+pub mod minimax;
 pub mod prefilter;
 pub mod rules;
 pub mod solve;
