@@ -106,3 +106,33 @@ fn the_planner_measures_published_methods_only_where_they_can_be_chosen() {
     assert!(!listed(&one, &unbiased));
     assert!(!listed(&two, &biased));
 }
+
+/// The fitted tables' published columns are each family's worst over the
+/// surfaces, the same number the comparison table reads, `None` below a
+/// family's smallest M and where it has no rule.
+#[test]
+fn the_fitted_tables_carry_each_published_rule_worst() {
+    use speclab_study::experiments::rules;
+    use speclab_study::published::compare::{self as table, Candidate};
+    let (light, surfaces) = (Named::from(Light::F11), scene::builtin_surfaces());
+    let rows = rules::by_m(&light, &surfaces, Depth::ONE).unwrap();
+    for m in [6, 10, 16] {
+        let row = &rows[m - 1];
+        let candidates = Family::ALL.map(|f| Candidate::Published(f, m));
+        let expected =
+            table::table(std::slice::from_ref(&light), &surfaces, &candidates, Depth::ONE).unwrap();
+        for (got, want) in row.published.iter().zip(&expected) {
+            let want = want.per_light[0];
+            match got {
+                Some(got) => assert!((got - want).abs() <= 1e-12, "M = {m}, {}: {got} vs {want}", want),
+                None => assert!(want.is_nan(), "M = {m}: {want}"),
+            }
+        }
+    }
+    // ASTM takes four wavelengths, Wallis three: none below.
+    assert_eq!(rows[2].published[0], None);
+    assert!(rows[2].published[3].is_some() && rows[1].published[3].is_none());
+    // Borges has no rule of 64 shared nodes under F11.
+    assert_eq!(rows[63].published[1], None);
+    assert!(rows[63].published[0].is_some());
+}
