@@ -54,8 +54,8 @@ pub fn worst(light: &dyn Spectrum, rule: &Rule, surfaces: &[&dyn Spectrum]) -> f
 
 /// `rule`'s wavelengths with the weights of the smallest worst ΔE00 over
 /// `surfaces` found in `iterations` of Lawson's iteration (`rule` itself
-/// if none does better). An error for no surfaces, or a light the
-/// observer does not see.
+/// if none does better; a light the observer does not see leaves nothing
+/// to solve and keeps it too). An error for no surfaces.
 pub fn minimax(
     light: &dyn Spectrum,
     rule: &Rule,
