@@ -183,11 +183,14 @@ mod tests {
         ));
     }
 
-    /// No step at all keeps the rule as it was.
+    /// No step at all, or nothing to solve, keeps the rule as it was.
     #[test]
     fn no_steps_keep_the_rule() {
         let six = six();
         let rule = FittedRules::of(&lights::A).unwrap().rule(6).unwrap().clone();
         assert_eq!(minimax(&lights::A, &rule, &six, 0).unwrap(), rule);
+        // A black light leaves nothing to solve: the rule as it was.
+        let black = speclab::spectrum::Constant::new(0.0);
+        assert_eq!(minimax(&black, &rule, &six, 5).unwrap(), rule);
     }
 }
