@@ -89,13 +89,23 @@ pub fn minimax(
         if max < best.0 {
             best = (max, candidate);
         }
-        let total: f64 = u.iter().zip(&errors).map(|(u, e)| u * e).sum();
-        if total.is_nan() || total <= 0.0 {
+        if !reweight(&mut u, &errors) {
             break;
         }
-        u.iter_mut().zip(&errors).for_each(|(u, e)| *u *= e / total);
     }
     Ok(best.1)
+}
+
+/// Lawson's step: `uₛ ← uₛ·eₛ / Σ u·e`, so that the weights sum to one
+/// again; `false` (and `u` as it was) when `Σ u·e` is zero or not a number,
+/// nothing left to reweight.
+fn reweight(u: &mut [f64], errors: &[f64]) -> bool {
+    let total: f64 = u.iter().zip(errors).map(|(u, e)| u * e).sum();
+    if total.is_nan() || total <= 0.0 {
+        return false;
+    }
+    u.iter_mut().zip(errors).for_each(|(u, e)| *u *= e / total);
+    true
 }
 
 /// One surface: its values at the wavelengths (light included), its exact
@@ -165,6 +175,7 @@ mod tests {
                 let rule = FittedRules::with_surfaces(&[light], &six).unwrap().rule(m).unwrap().clone();
                 let better = minimax(light, &rule, &six, 100).unwrap();
                 let (before, after) = (worst(light, &rule, &six), worst(light, &better, &six));
+                assert!(before > 0.1, "{before}");
                 eprintln!("M = {m}: worst ΔE00 {before:.3} -> {after:.3}");
                 assert!(after < 0.66 * before, "M = {m}: {before} -> {after}");
                 assert_eq!(better.lambda(), rule.lambda());
@@ -181,6 +192,24 @@ mod tests {
             ),
             Err(StudyError::EmptyScene)
         ));
+    }
+
+    /// Lawson's step keeps the weights a distribution, moved towards the
+    /// larger errors; none when there is nothing to move.
+    #[test]
+    fn reweighting_moves_weight_to_the_larger_errors() {
+        let mut u = vec![0.25, 0.25, 0.5];
+        assert!(reweight(&mut u, &[1.0, 3.0, 2.0]));
+        let total = 0.25 + 0.75 + 1.0;
+        for (got, want) in u.iter().zip([0.25 / total, 0.75 / total, 1.0 / total]) {
+            assert!((got - want).abs() < 1e-15, "{u:?}");
+        }
+        assert!((u.iter().sum::<f64>() - 1.0).abs() < 1e-15);
+        for errors in [[0.0; 3], [f64::NAN, 1.0, 1.0]] {
+            let before = u.clone();
+            assert!(!reweight(&mut u, &errors));
+            assert_eq!(u, before);
+        }
     }
 
     /// No step at all, or nothing to solve, keeps the rule as it was.

@@ -290,9 +290,10 @@ fn the_oracle_is_fitted_to_the_surfaces_it_is_judged_on() {
     use speclab_study::evaluate::perceptual::delta_e00;
     let lights = [Named::from(Light::F11), Named::from(Light::A)];
     let surfaces = scene::builtin_surfaces();
-    let rows = compare::table(&lights, &surfaces, &[Candidate::Oracle(4), Candidate::Fitted(4)], Depth::ONE)
-        .unwrap();
+    let candidates = [Candidate::Oracle(4), Candidate::Fitted(4), Candidate::OracleMinimax(4)];
+    let rows = compare::table(&lights, &surfaces, &candidates, Depth::ONE).unwrap();
     assert_eq!(rows[0].candidate.to_string(), "oracle");
+    assert_eq!(rows[2].candidate.to_string(), "oracle-minimax");
     for (i, light) in lights.iter().enumerate() {
         let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
         let rules = FittedRules::with_surfaces(&[&light.spectrum], &own).unwrap();
@@ -313,5 +314,11 @@ fn the_oracle_is_fitted_to_the_surfaces_it_is_judged_on() {
         );
         // Fitted to these six, it serves them better than the prior's rule.
         assert!(rows[0].per_light[i] < rows[1].per_light[i], "{}", light.name);
+        // Its wavelengths with Lawson's weights: minimax's own worst, and
+        // lower still.
+        let better = speclab_study::published::minimax::minimax(&light.spectrum, rule, &own, 100).unwrap();
+        let want = speclab_study::published::minimax::worst(&light.spectrum, &better, &own);
+        assert!((rows[2].per_light[i] - want).abs() <= 1e-12, "{}: {want}", light.name);
+        assert!(rows[2].per_light[i] < rows[0].per_light[i], "{}", light.name);
     }
 }
