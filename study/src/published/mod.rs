@@ -11,8 +11,12 @@
 //!   on a fine grid (Stieltjes, Golub–Welsch), and [`solve`] for the small
 //!   linear systems;
 //! - [`held_apart`]: 53 measured reflectances kept out of every fit;
+//! - [`minimax`]: weights for given wavelengths that lower the worst ΔE00
+//!   over a set of surfaces (Lawson's iteration);
 //! - [`compare`]: worst and mean ΔE00 of each candidate over lights ×
-//!   surfaces, at any depth (`cargo run --release --example published`).
+//!   surfaces, at any depth (`cargo run --release --example published`),
+//!   with two bounds that see the judged surfaces (`oracle`,
+//!   `oracle-minimax`).
 //!
 //! Units: wavelengths in nm, weights in nm × the light's unit (a rule's
 //! XYZ is on the reference's scale), ΔE00 relative to each light's white.
