@@ -3,10 +3,11 @@
 //! prefiltering, on every built-in light × the 53 held-apart reflectances
 //! (`data/held-apart/`, in no fitted prior): worst / mean ΔE00 and pairs
 //! above 1, at depth 1 and 2, then each light's worst for the targets of
-//! docs/published-rules.md. The last column, `oracle`, is the rule fitted
-//! to each light over these very 53 reflectances
-//! (`FittedRules::with_surfaces`): not a method (it has seen the answers)
-//! but the best a fitted rule of M wavelengths reaches on them.
+//! docs/published-rules.md. The last two columns are reference points,
+//! not methods (they have seen the answers): `oracle`, the rule fitted to
+//! each light over these very 53 reflectances
+//! (`FittedRules::with_surfaces`), and `oracle-minimax`, its wavelengths
+//! with weights that lower the worst ΔE00 over them (`published::minimax`).
 //! Markdown, as the docs quote it.
 //!
 //! ```text

@@ -119,7 +119,8 @@ pub enum Error {
         expected: usize,
     },
     /// A surface handed to a fit (`FittedRules::with_surfaces`) whose value
-    /// is not a finite number at some wavelength.
+    /// at some wavelength is not a number of magnitude at most 1,000
+    /// (`fitted::MAX_REFLECTANCE`).
     Surface {
         /// Which surface of the list.
         index: usize,
@@ -200,7 +201,10 @@ impl fmt::Display for Error {
                 write!(f, "rule weights for {name}: expected {expected} (one per wavelength), found {len}")
             }
             Error::Surface { index, lambda, value } => {
-                write!(f, "surface {index}: expected a finite reflectance, found {value} at {lambda} nm")
+                write!(
+                    f,
+                    "surface {index}: expected a reflectance from -1000 to 1000, found {value} at {lambda} nm"
+                )
             }
             Error::UnknownName { what, expected, found } if expected.len() <= 12 => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))

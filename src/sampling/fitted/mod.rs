@@ -8,8 +8,10 @@
 //! by quadrature, fitted per scene. [`Rule::fit`] chooses the
 //! wavelengths and weights that reproduce, by weighted least squares, the
 //! exact XYZ of each light times each reflectance of a smooth prior
-//! (`prior.rs`; see `problem.rs` for the weighting and the anchors,
-//! `search.rs` for the search). The weights apply to the product, so one rule serves every
+//! (`prior.rs`; `moments.rs` for what the fit needs of the reflectances,
+//! `problem.rs` for the weighting and the anchors, `search.rs` for the
+//! search); [`FittedRules::with_surfaces`] fits over a scene's own
+//! materials instead. The weights apply to the product, so one rule serves every
 //! intensity of its lights and every path through the scene.
 //!
 //! The rule reproduces the perfect white under each of its lights, and the
@@ -40,7 +42,7 @@ mod moments;
 mod problem;
 mod search;
 
-pub use moments::MAX_SURFACES;
+pub use moments::{MAX_REFLECTANCE, MAX_SURFACES};
 
 use std::sync::{Arc, OnceLock};
 
@@ -64,11 +66,18 @@ fn as_dyn<S: Spectrum>(lights: &[S]) -> Vec<&dyn Spectrum> {
 }
 
 /// The rules of a problem's groups at `m` (clamped into 1 ..= MAX_M): one
-/// per group, at the same wavelengths.
-fn fit(problem: &Problem, m: usize) -> Vec<Rule> {
-    let (nodes, weights) = problem.fit(m.clamp(1, MAX_M.min(CANDIDATES)));
+/// per group, at the same wavelengths. An [`Error::Count`] if the
+/// reflectances tell apart fewer wavelengths than `m` (a handful of
+/// surfaces given to [`FittedRules::with_surfaces`]; never the prior).
+fn fit(problem: &Problem, m: usize) -> Result<Vec<Rule>, Error> {
+    let m = m.clamp(1, MAX_M.min(CANDIDATES));
+    let (nodes, weights) = problem.fit(m);
+    if nodes.len() < m {
+        let what = "a fitted wavelength count (at most what the surfaces tell apart)";
+        return Err(Error::Count { what, found: m, min: 1, max: nodes.len() });
+    }
     let lambda: Vec<f64> = nodes.iter().map(|&j| LAMBDA_MIN + j as f64).collect();
-    weights.into_iter().map(|w| Rule::fitted(lambda.clone(), w)).collect()
+    Ok(weights.into_iter().map(|w| Rule::fitted(lambda.clone(), w)).collect())
 }
 
 impl Rule {
@@ -80,7 +89,7 @@ impl Rule {
     /// [`FittedRules`] once.
     pub fn fit<S: Spectrum>(lights: &[S], m: usize) -> Result<Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(fit(&Problem::new(&as_dyn(lights))?, m).swap_remove(0))
+        Ok(fit(&Problem::new(&as_dyn(lights))?, m)?.swap_remove(0))
     }
 
     /// One rule per light, all at the same `m` wavelengths, each with
@@ -111,13 +120,14 @@ impl Rule {
     /// ```
     pub fn fit_each<S: Spectrum>(lights: &[S], m: usize) -> Result<Vec<Rule>, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(fit(&Problem::each(&as_dyn(lights))?, m))
+        fit(&Problem::each(&as_dyn(lights))?, m)
     }
 }
 
 /// The rules fitted to a scene's lights, each M fitted on first use and
 /// kept: the part of a fit that depends on the lights alone (the normal
-/// equations over the prior, tens of milliseconds) is built once, so that
+/// equations over the prior or the scene's surfaces, tens of
+/// milliseconds) is built once, so that
 /// asking again (another M, another surface, another trial) costs a
 /// lookup. Clones share what is kept.
 ///
@@ -158,9 +168,9 @@ impl FittedRules {
     /// the built-in prior: each surface alone and products of two to four
     /// of them (paths of several bounces), drawn as the prior's are, with
     /// the perfect white and the surfaces' mean as anchors. A renderer that
-    /// knows its materials gets the rule that serves them best; a study gets
-    /// the best a rule of M wavelengths can do on a set it is judged on
-    /// (fitted to the very surfaces: a bound, not an estimate). Building it
+    /// knows its materials gets a rule fitted to them; a study gets a
+    /// reference point, the fit over the very set it then judges (not a
+    /// lower bound: least squares, not the worst case). Building it
     /// takes about 65 ms for a few surfaces and 0.8 s for [`MAX_SURFACES`]
     /// (release build).
     ///
@@ -196,12 +206,19 @@ impl FittedRules {
         Self::new(&[&light as &dyn Spectrum])
     }
 
-    /// The rule of `m` wavelengths, fitted on first use: the same rule as
-    /// [`Rule::fit`]`(lights, m)`. An [`Error::Count`] unless
-    /// `1 ≤ m ≤` [`MAX_M`].
+    /// The rule of `m` wavelengths, fitted on first use: for rules over the
+    /// prior, the same rule as [`Rule::fit`]`(lights, m)`. An
+    /// [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`], or (rules
+    /// [`with_surfaces`](FittedRules::with_surfaces)) if the surfaces tell
+    /// apart fewer than `m` wavelengths.
     pub fn rule(&self, m: usize) -> Result<&Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(self.0.rules[m - 1].get_or_init(|| fit(&self.0.problem, m).swap_remove(0)))
+        let kept = &self.0.rules[m - 1];
+        if let Some(rule) = kept.get() {
+            return Ok(rule);
+        }
+        let rule = fit(&self.0.problem, m)?.swap_remove(0);
+        Ok(kept.get_or_init(|| rule))
     }
 }
 
@@ -211,6 +228,22 @@ mod tests {
     use crate::data::Light;
     use crate::sampling::prior::PriorMean;
     use crate::sampling::reference;
+
+    /// A grey, alone, tells apart one wavelength (every row is the light
+    /// times a constant): a rule of one, and an error for more.
+    #[test]
+    fn surfaces_tell_apart_as_many_wavelengths_as_they_span() {
+        use crate::spectrum::{Constant, Spectrum, data::lights};
+        let grey = Constant::new(0.5);
+        let rules = FittedRules::with_surfaces(&[&lights::F11], &[&grey as &dyn Spectrum]).unwrap();
+        assert_eq!(rules.rule(1).unwrap().m(), 1);
+        match rules.rule(10) {
+            Err(e @ crate::Error::Count { found: 10, max: 1, .. }) => {
+                assert!(e.to_string().contains("tell apart"))
+            }
+            other => panic!("{other:?}"),
+        }
+    }
 
     /// Each rule reproduces its anchors to [`ANCHOR_TOLERANCE`]: the
     /// perfect white under its light, and the prior's mean reflectance.

@@ -22,6 +22,11 @@ use crate::spectrum::{LAMBDA_MIN, Spectrum, integrate, observer, quadrature};
 /// about 60 ms for a few surfaces and 0.2 ms and 12 kB more for each).
 pub const MAX_SURFACES: usize = 4096;
 
+/// The largest magnitude of a surface's value a fit takes: reflectances,
+/// fluorescent ones included, and products of four of them stay far from
+/// overflow.
+pub const MAX_REFLECTANCE: f64 = 1e3;
+
 /// A fit's reflectances and what the fit needs of them.
 pub(crate) struct Moments {
     /// Per channel, `Σ ω²·v(λⱼ)·v(λₖ)` over the paths (C × C, row-major).
@@ -63,7 +68,8 @@ impl Moments {
         static BUILTIN: OnceLock<Moments> = OnceLock::new();
         BUILTIN.get_or_init(|| {
             let members: Vec<&dyn Spectrum> = prior().iter().map(|r| r as &dyn Spectrum).collect();
-            let (at_candidates, at_nodes) = sample(&members).unwrap_or_default();
+            // The prior's members lie in (0, 1) (prior.rs's test): never an error.
+            let (at_candidates, at_nodes) = sample(&members).unwrap_or_else(|_| unreachable!());
             Moments::new(&at_candidates, at_nodes)
         })
     }
@@ -71,7 +77,7 @@ impl Moments {
     /// The moments of `surfaces`: each alone, then products of two to
     /// four drawn as the built-in prior's are. An [`Error::Count`] for none
     /// or more than [`MAX_SURFACES`]; an [`Error::Surface`] for a value
-    /// that is not finite.
+    /// that is not finite or above [`MAX_REFLECTANCE`] in magnitude.
     pub(crate) fn of(surfaces: &[&dyn Spectrum]) -> Result<Moments, Error> {
         if !(1..=MAX_SURFACES).contains(&surfaces.len()) {
             let (found, max) = (surfaces.len(), MAX_SURFACES);
@@ -148,7 +154,8 @@ impl Moments {
 type Sampled = (Vec<[f64; CANDIDATES]>, Vec<Vec<f64>>);
 
 /// Each surface at the candidates and at the quadrature's nodes; an
-/// [`Error::Surface`] for a value that is not finite.
+/// [`Error::Surface`] for a value that is not finite or above
+/// [`MAX_REFLECTANCE`] in magnitude.
 fn sample(surfaces: &[&dyn Spectrum]) -> Result<Sampled, Error> {
     let (lambda, _) = nodes();
     let mut at_candidates = Vec::with_capacity(surfaces.len());
@@ -156,8 +163,8 @@ fn sample(surfaces: &[&dyn Spectrum]) -> Result<Sampled, Error> {
     for (index, s) in surfaces.iter().enumerate() {
         let c: [f64; CANDIDATES] = std::array::from_fn(|j| s.eval(candidate(j)));
         let n: Vec<f64> = lambda.iter().map(|&l| s.eval(l)).collect();
-        let bad = c.iter().zip((0..).map(candidate)).chain(n.iter().zip(lambda.iter().copied()));
-        if let Some((&value, lambda)) = bad.into_iter().find(|(v, _)| !v.is_finite()) {
+        let mut values = c.iter().zip((0..).map(candidate)).chain(n.iter().zip(lambda.iter().copied()));
+        if let Some((&value, lambda)) = values.find(|(v, _)| v.is_nan() || v.abs() > MAX_REFLECTANCE) {
             return Err(Error::Surface { index, lambda, value });
         }
         at_candidates.push(c);
@@ -237,9 +244,17 @@ mod tests {
         match Moments::of(&[&grey as &dyn Spectrum, &nan]) {
             Err(e @ Error::Surface { index: 1, lambda, value }) => {
                 assert!(lambda == 380.0 && value.is_nan());
-                assert_eq!(e.to_string(), "surface 1: expected a finite reflectance, found NaN at 380 nm");
+                assert_eq!(
+                    e.to_string(),
+                    "surface 1: expected a reflectance from -1000 to 1000, found NaN at 380 nm"
+                );
             }
             other => panic!("{:?}", other.map(|_| ())),
         }
+        // Finite but past overflow in a product of four: an error too,
+        // while a fluorescent 1.5 is a reflectance.
+        let (huge, bright) = (Constant::new(-1e100), Constant::new(1.5));
+        assert!(matches!(Moments::of(&[&huge as &dyn Spectrum]), Err(Error::Surface { index: 0, .. })));
+        assert!(Moments::of(&[&bright as &dyn Spectrum]).is_ok());
     }
 }

@@ -42,12 +42,13 @@ pub enum Candidate {
     /// speclab's rule of M wavelengths fitted to the light.
     Fitted(usize),
     /// The rule of M wavelengths fitted to the light over the very
-    /// surfaces it is judged on (`FittedRules::with_surfaces`): what a
-    /// fitted rule of M can reach on them at best, a bound and not a method.
+    /// surfaces it is judged on (`FittedRules::with_surfaces`): a reference
+    /// point, not a method (it has seen the answers) and not a lower bound
+    /// (it minimises squares, not the worst case).
     Oracle(usize),
     /// The oracle's wavelengths with weights that minimise the worst ΔE00
-    /// over the same surfaces at depth 1 ([`minimax`]): what weights alone
-    /// can do there, a bound and not a method.
+    /// over the same surfaces at depth 1 ([`minimax`]): a reference point,
+    /// not a method.
     OracleMinimax(usize),
     /// A published rule of M wavelengths.
     Published(Family, usize),
@@ -68,12 +69,11 @@ impl Candidate {
             Candidate::Fitted(m) => Prepared::Fitted(light.rules()?.rule(m)?.clone()),
             Candidate::Oracle(m) | Candidate::OracleMinimax(m) => {
                 let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
-                let rules = match oracle.take() {
-                    Some(rules) => rules,
-                    None => FittedRules::with_surfaces(&[&light.spectrum], &own)?,
+                let rules = match oracle {
+                    Some(rules) => rules.clone(),
+                    None => oracle.insert(FittedRules::with_surfaces(&[&light.spectrum], &own)?).clone(),
                 };
                 let rule = rules.rule(m)?.clone();
-                *oracle = Some(rules);
                 match self {
                     Candidate::OracleMinimax(_) => {
                         Prepared::Fitted(minimax(&light.spectrum, &rule, &own, MINIMAX_STEPS)?)

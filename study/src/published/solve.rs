@@ -1,6 +1,7 @@
 //! Small dense linear systems, by Gaussian elimination with partial
 //! pivoting: the node polynomial of Borges's rules and interpolatory
-//! weights (at most 64 unknowns).
+//! weights (at most 64 unknowns), and the minimax weights (3·M, at
+//! most 192).
 //!
 //! ```
 //! use speclab_study::published::solve::solve;
