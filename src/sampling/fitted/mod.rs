@@ -66,18 +66,12 @@ fn as_dyn<S: Spectrum>(lights: &[S]) -> Vec<&dyn Spectrum> {
 }
 
 /// The rules of a problem's groups at `m` (clamped into 1 ..= MAX_M): one
-/// per group, at the same wavelengths. An [`Error::Count`] if the
-/// reflectances tell apart fewer wavelengths than `m` (a handful of
-/// surfaces given to [`FittedRules::with_surfaces`]; never the prior).
-fn fit(problem: &Problem, m: usize) -> Result<Vec<Rule>, Error> {
-    let m = m.clamp(1, MAX_M.min(CANDIDATES));
-    let (nodes, weights) = problem.fit(m);
-    if nodes.len() < m {
-        let what = "a fitted wavelength count (at most what the surfaces tell apart)";
-        return Err(Error::Count { what, found: m, min: 1, max: nodes.len() });
-    }
+/// per group, at the same wavelengths, as many as the reflectances tell
+/// apart up to `m` (see [`FittedRules::rule`]).
+fn fit(problem: &Problem, m: usize) -> Vec<Rule> {
+    let (nodes, weights) = problem.fit(m.clamp(1, MAX_M.min(CANDIDATES)));
     let lambda: Vec<f64> = nodes.iter().map(|&j| LAMBDA_MIN + j as f64).collect();
-    Ok(weights.into_iter().map(|w| Rule::fitted(lambda.clone(), w)).collect())
+    weights.into_iter().map(|w| Rule::fitted(lambda.clone(), w)).collect()
 }
 
 impl Rule {
@@ -89,7 +83,7 @@ impl Rule {
     /// [`FittedRules`] once.
     pub fn fit<S: Spectrum>(lights: &[S], m: usize) -> Result<Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(fit(&Problem::new(&as_dyn(lights))?, m)?.swap_remove(0))
+        Ok(fit(&Problem::new(&as_dyn(lights))?, m).swap_remove(0))
     }
 
     /// One rule per light, all at the same `m` wavelengths, each with
@@ -120,7 +114,7 @@ impl Rule {
     /// ```
     pub fn fit_each<S: Spectrum>(lights: &[S], m: usize) -> Result<Vec<Rule>, Error> {
         check_m("a fitted wavelength count", m)?;
-        fit(&Problem::each(&as_dyn(lights))?, m)
+        Ok(fit(&Problem::each(&as_dyn(lights))?, m))
     }
 }
 
@@ -208,17 +202,15 @@ impl FittedRules {
 
     /// The rule of `m` wavelengths, fitted on first use: for rules over the
     /// prior, the same rule as [`Rule::fit`]`(lights, m)`. An
-    /// [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`], or (rules
-    /// [`with_surfaces`](FittedRules::with_surfaces)) if the surfaces tell
-    /// apart fewer than `m` wavelengths.
+    /// [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`]. The rule has fewer
+    /// wavelengths where the reflectances tell apart fewer (`m()` says how
+    /// many): a handful of surfaces given to
+    /// [`with_surfaces`](FittedRules::with_surfaces) (one grey tells apart
+    /// one), or the prior at M near 64 under a light dark over much of the
+    /// range (F11: 59 at M = 64).
     pub fn rule(&self, m: usize) -> Result<&Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        let kept = &self.0.rules[m - 1];
-        if let Some(rule) = kept.get() {
-            return Ok(rule);
-        }
-        let rule = fit(&self.0.problem, m)?.swap_remove(0);
-        Ok(kept.get_or_init(|| rule))
+        Ok(self.0.rules[m - 1].get_or_init(|| fit(&self.0.problem, m).swap_remove(0)))
     }
 }
 
@@ -229,20 +221,32 @@ mod tests {
     use crate::sampling::prior::PriorMean;
     use crate::sampling::reference;
 
+    /// Each M is kept in its own place: asking for 6 and 10 keeps 6 and 10,
+    /// and the last place holds M = 64 (under F11 the prior tells apart 59
+    /// wavelengths there: regression snapshot).
+    #[test]
+    fn rules_are_kept_by_m() {
+        let rules = FittedRules::of(&crate::spectrum::data::lights::F11).unwrap();
+        rules.rule(6).unwrap();
+        rules.rule(10).unwrap();
+        assert!(format!("{rules:?}").contains("fitted: [6, 10]"), "{rules:?}");
+        assert_eq!(rules.rule(64).unwrap().m(), 59);
+        assert!(format!("{rules:?}").contains("fitted: [6, 10, 64]"), "{rules:?}");
+    }
+
     /// A grey, alone, tells apart one wavelength (every row is the light
-    /// times a constant): a rule of one, and an error for more.
+    /// times a constant): a rule of one however many are asked for, which
+    /// reproduces the grey.
     #[test]
     fn surfaces_tell_apart_as_many_wavelengths_as_they_span() {
+        use crate::sampling::reference;
         use crate::spectrum::{Constant, Spectrum, data::lights};
         let grey = Constant::new(0.5);
         let rules = FittedRules::with_surfaces(&[&lights::F11], &[&grey as &dyn Spectrum]).unwrap();
-        assert_eq!(rules.rule(1).unwrap().m(), 1);
-        match rules.rule(10) {
-            Err(e @ crate::Error::Count { found: 10, max: 1, .. }) => {
-                assert!(e.to_string().contains("tell apart"))
-            }
-            other => panic!("{other:?}"),
-        }
+        let rule = rules.rule(10).unwrap();
+        assert_eq!(rule.m(), 1);
+        let (got, want) = (rule.xyz_of_product(&[&lights::F11, &grey]), reference::xyz(&lights::F11, &grey));
+        assert!((got.y - want.y).abs() < 1e-6 * want.y, "{got:?} {want:?}");
     }
 
     /// Each rule reproduces its anchors to [`ANCHOR_TOLERANCE`]: the

@@ -256,5 +256,9 @@ mod tests {
         let (huge, bright) = (Constant::new(-1e100), Constant::new(1.5));
         assert!(matches!(Moments::of(&[&huge as &dyn Spectrum]), Err(Error::Surface { index: 0, .. })));
         assert!(Moments::of(&[&bright as &dyn Spectrum]).is_ok());
+        // The limit itself is in.
+        let (top, over) = (Constant::new(-MAX_REFLECTANCE), Constant::new(MAX_REFLECTANCE * (1.0 + 1e-15)));
+        assert!(Moments::of(&[&top as &dyn Spectrum]).is_ok());
+        assert!(Moments::of(&[&over as &dyn Spectrum]).is_err());
     }
 }
