@@ -183,7 +183,7 @@ fn fit_times(lights: &[Named], out: &mut String) -> Result<(), StudyError> {
     }
     let _ = writeln!(
         out,
-        "Fit time under {} (one thread; the first includes the prior's moments): {}",
+        "Fit time under {} (one thread; after the prior's moments and the light's normal equations, built once): {}",
         d65.name,
         times.join(", ")
     );

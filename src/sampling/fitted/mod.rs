@@ -165,7 +165,7 @@ impl FittedRules {
     /// knows its materials gets a rule fitted to them; a study gets a
     /// reference point, the fit over the very set it then judges (not a
     /// lower bound: least squares, not the worst case). Building it
-    /// takes about 65 ms for a few surfaces and 0.8 s for [`MAX_SURFACES`]
+    /// takes about 40 ms for a few surfaces and 0.45 s for [`MAX_SURFACES`]
     /// (release build).
     ///
     /// An [`Error::Count`] for no surfaces or more than [`MAX_SURFACES`],

@@ -19,7 +19,7 @@ use crate::sampling::prior::{PriorPath, draw_paths, prior};
 use crate::spectrum::{LAMBDA_MIN, Spectrum, integrate, observer, quadrature};
 
 /// The most surfaces a fit takes (in a release build the moments take
-/// about 60 ms for a few surfaces and 0.2 ms and 12 kB more for each).
+/// about 40 ms for a few surfaces and 0.1 ms and 12 kB more for each).
 pub const MAX_SURFACES: usize = 4096;
 
 /// The largest magnitude of a surface's value a fit takes: reflectances,
