@@ -40,3 +40,33 @@ pub fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
     }
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::solve;
+
+    /// A 3 × 3 system whose answer is known, rows given out of pivot order.
+    #[test]
+    fn solves_a_known_system() {
+        let a = vec![vec![1.0, 2.0, 3.0], vec![4.0, 5.0, 6.0], vec![7.0, 8.0, 10.0]];
+        let x = [1.0, -2.0, 3.0];
+        let b = a.iter().map(|r: &Vec<f64>| r.iter().zip(&x).map(|(a, x)| a * x).sum()).collect();
+        let got = solve(a, b).unwrap();
+        for (g, w) in got.iter().zip(x) {
+            assert!((g - w).abs() < 1e-12, "{got:?}");
+        }
+    }
+
+    /// Mis-shaped systems, and pivots below 1e-13 of the largest entry
+    /// (whatever the matrix's scale), give `None`.
+    #[test]
+    fn refuses_mis_shaped_and_singular_systems() {
+        assert!(solve(vec![vec![1.0, 2.0, 3.0], vec![4.0, 5.0, 6.0]], vec![1.0, 2.0]).is_none());
+        assert!(solve(vec![vec![1.0, 2.0]], vec![1.0, 2.0]).is_none());
+        assert!(solve(vec![vec![1.0, 1.0], vec![1.0, 1.0 + 1e-15]], vec![1.0, 2.0]).is_none());
+        let big = vec![vec![1e3, 1e3], vec![1e3, 1e3 + 1e-11]];
+        assert!(solve(big, vec![1.0, 2.0]).is_none());
+        let fine = vec![vec![1e3, 1e3], vec![1e3, 1e3 + 1e-6]];
+        assert!(solve(fine, vec![1.0, 2.0]).is_some());
+    }
+}

@@ -205,6 +205,10 @@ mod tests {
         assert!((carry.luminance(&(), carry.one()) - 1.0).abs() < 1e-12);
         let half = carry.scale(carry.one(), 0.5);
         assert!((carry.luminance(&(), half) - 0.5).abs() < 1e-12);
+        // Russian roulette reads the largest channel: G4's, then half of it.
+        let g4 = beta.to_array().into_iter().fold(f64::MIN, f64::max);
+        assert!(g4 > 0.05 && g4 < 1.0 && carry.max_component(&(), beta) == g4, "{beta:?}");
+        assert_eq!(carry.max_component(&(), carry.scale(beta, 0.5)), 0.5 * g4);
         let two = Prefilter::new(Space::Xyz, &[&lights::F11, &lights::A], &[&patches::G4]).unwrap();
         let white = reference::white(&lights::A);
         assert!((two.emitted(&(), 1, two.one()).y - white.y).abs() < 1e-9 * white.y);
