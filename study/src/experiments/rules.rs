@@ -79,7 +79,7 @@ fn rows_by_m(
             let rule = fits.rule(m)?;
             let buckets = [Rule::buckets(m, BucketRule::Center)?, Rule::buckets(m, BucketRule::BoxAverage)?];
             let published = if published { published_rules(light, m)? } else { [None, None, None, None] };
-            let mut published_worst = published.clone().map(|r| r.map(|_| 0.0f64));
+            let mut published_worst = published.each_ref().map(|r| r.as_ref().map(|_| 0.0f64));
             for (s, &exact) in surfaces.iter().zip(&exact) {
                 let path = depth.path(&s.spectrum);
                 let mut factors: Vec<&dyn Spectrum> = vec![l];
@@ -115,7 +115,11 @@ fn published_rules(light: &Named, m: usize) -> Result<[Option<Rule>; 4], StudyEr
             Err(e) => Err(e),
         }
     };
-    Ok([rule(Family::ALL[0])?, rule(Family::ALL[1])?, rule(Family::ALL[2])?, rule(Family::ALL[3])?])
+    let mut rules = [None, None, None, None];
+    for (r, family) in rules.iter_mut().zip(Family::ALL) {
+        *r = rule(family)?;
+    }
+    Ok(rules)
 }
 
 /// The stable error at `m` of the rule `pick` reads: the largest over
