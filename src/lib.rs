@@ -79,7 +79,9 @@
 //! ```
 
 #![warn(missing_docs)]
-// One `unsafe` block, in `spectrum/lookup.rs`, allowed there alone.
+// `unsafe` is allowed in two places alone: one block in
+// `spectrum/lookup.rs`, and `spectrum/simd/x86.rs` (AVX2 loads, and calls
+// into AVX2 code made only after the processor said it has it).
 #![deny(unsafe_code)]
 
 #[cfg(doctest)]

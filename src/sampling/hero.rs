@@ -50,7 +50,7 @@ use crate::sampling::strata::Strata;
 use crate::sampling::wavelengths::{Weighted, dot_slices, weighted_wavelengths};
 use crate::spectrum::DenseObserver;
 use crate::spectrum::observer::{self, Cie1931, Observer};
-use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
+use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, Spectrum};
 
 /// K wavelengths drawn together (a hero and K − 1 companions), each with
 /// its density, and their weights `c̄(λⱼ)/(K·pdfⱼ)`: the drawn kind of
@@ -69,6 +69,17 @@ pub const USUAL_K: usize = 4;
 pub const MAX_WIDTH: usize = 64;
 
 impl<const K: usize, T: Float> HeroSample<K, T> {
+    /// Drawn wavelengths from what they hold.
+    pub(crate) fn from_weighted(w: Weighted<K, T>) -> Self {
+        HeroSample(w)
+    }
+
+    /// `[X, Y, Z, Σ w₀·v]` of values `v`, from the rows.
+    #[inline(always)]
+    fn sums(&self, v: &SampledSpectrum<K, T>) -> [T; 4] {
+        self.0.sums(v)
+    }
+
     /// Compile-time guard: a sample has at least one wavelength.
     const NONZERO: () = assert!(K > 0, "HeroSample needs at least one wavelength (K > 0)");
 

@@ -23,10 +23,9 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use wide::f64x4;
-
 use crate::color::Xyz;
 use crate::error::{Error, Field, Invalid, SampleError};
+use crate::spectrum::simd::slices::Sums;
 use crate::spectrum::weights::{self, Weights};
 use crate::spectrum::{Interpolation, Role, Spectrum, interp};
 use crate::spectrum::{integrate, validate};
@@ -148,11 +147,12 @@ impl<L: Spectrum> PreparedLight<L> {
         let scale = self.weights.step().filter(|_| cubic && n >= 5).map(|h| 1.0 / (2.0 * h * h));
         let middle = scale.map(|s| s * self.weights.middle_margin());
         let w = self.weights.columns();
+        let sums = Sums::detect();
         for (i, (y, o)) in r.chunks_exact(n).zip(out.iter_mut()).enumerate() {
-            let mut sum = dot(w, y);
+            let mut sum = sums.dot(w, y);
             let clear = match (scale, middle) {
                 (Some(scale), Some(middle)) => {
-                    let (lo, hi, second) = spread(y);
+                    let (lo, hi, second) = sums.spread(y);
                     let ends = end_clear(y, 0, 0, margins[0] * scale)
                         & end_clear(y, n - 2, n - 4, margins[n - 2] * scale);
                     (lo - middle * second >= 0.0) & (hi + middle * second <= 1.0) & ends
@@ -229,42 +229,6 @@ impl<L: Spectrum> PreparedLight<L> {
     }
 }
 
-/// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|, four
-/// samples per vector (`wide`'s `f64x4`). With every middle segment's
-/// margin C, `lo − C·second ≥ 0` and `hi + C·second ≤ 1` clear them all: a
-/// segment's inner Bernstein coefficients lie within C·second of its
-/// linear interpolation, itself within [lo, hi]. (NaN slips through here;
-/// the caller checks the sum.)
-#[inline(always)]
-fn spread(y: &[f64]) -> (f64, f64, f64) {
-    let n = y.len();
-    let (mut lo, mut hi, mut second) = (f64x4::splat(y[0]), f64x4::splat(y[0]), f64x4::ZERO);
-    // Second differences start at 0, 4, 8, … while a whole vector of them
-    // fits (i + 6 ≤ n); the rest one at a time.
-    let mut i = 0;
-    while i + 6 <= n {
-        // Four samples from i + o (there are: i + 6 ≤ n).
-        let at = |o: usize| f64x4::new(*y[i + o..].first_chunk::<4>().unwrap_or(&[0.0; 4]));
-        let (a, b, c) = (at(0), at(1), at(2));
-        lo = lo.fast_min(a);
-        hi = hi.fast_max(a);
-        second = second.fast_max((a - b - b + c).abs());
-        i += 4;
-    }
-    let [lo, hi, second] = [lo, hi, second].map(f64x4::to_array);
-    let (mut lo, mut hi) = (lo.into_iter().fold(y[0], f64::min), hi.into_iter().fold(y[0], f64::max));
-    let mut second = second.into_iter().fold(0.0, f64::max);
-    for j in i..n {
-        lo = if y[j] < lo { y[j] } else { lo };
-        hi = if y[j] > hi { y[j] } else { hi };
-        if j + 2 < n {
-            let d = (y[j] - 2.0 * y[j + 1] + y[j + 2]).abs();
-            second = if d > second { d } else { second };
-        }
-    }
-    (lo, hi, second)
-}
-
 /// An end segment `k` (stencil from `s`) is clear: its samples' range,
 /// widened by `margin` times its stencil's larger |second difference|,
 /// stays in `[0, 1]`.
@@ -288,56 +252,4 @@ fn invalid_sample(r: &[f64], from: usize, n: usize) -> Option<Error> {
         Invalid::NonFinite { value }
     };
     Some(SampleError { index, field: Field::Value, problem }.into())
-}
-
-/// `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns, four samples per
-/// vector (`wide`'s `f64x4`), the rest one at a time.
-#[inline(always)]
-fn dot(columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
-    let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
-    let (y4, y_rest) = y[..n].as_chunks::<4>();
-    let [(x4, x_rest), (g4, g_rest), (z4, z_rest)] = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
-    let mut acc = [f64x4::ZERO; 3];
-    for (((y, x), g), z) in y4.iter().zip(x4).zip(g4).zip(z4) {
-        let y = f64x4::new(*y);
-        acc[0] = f64x4::new(*x).mul_add(y, acc[0]);
-        acc[1] = f64x4::new(*g).mul_add(y, acc[1]);
-        acc[2] = f64x4::new(*z).mul_add(y, acc[2]);
-    }
-    let mut sum = acc.map(f64x4::reduce_add);
-    for (i, &y) in y_rest.iter().enumerate() {
-        sum[0] += x_rest[i] * y;
-        sum[1] += g_rest[i] * y;
-        sum[2] += z_rest[i] * y;
-    }
-    sum
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{dot, spread};
-
-    /// The four-lane forms give what a scalar walk gives, for every length
-    /// from 2 to 40 (whole vectors and tails) and samples that put the
-    /// extremes and the largest second difference anywhere.
-    #[test]
-    fn four_lanes_agree_with_one_at_a_time() {
-        for n in 2..=40 {
-            for shift in 0..5 {
-                let y: Vec<f64> = (0..n).map(|i| ((i * 7 + shift * 3) % 11) as f64 / 10.0).collect();
-                let lo = y.iter().copied().fold(f64::INFINITY, f64::min);
-                let hi = y.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-                let second = y.windows(3).map(|w| (w[0] - 2.0 * w[1] + w[2]).abs()).fold(0.0, f64::max);
-                assert_eq!(spread(&y), (lo, hi, second), "n = {n}, shift {shift}");
-                let columns: [Vec<f64>; 3] =
-                    std::array::from_fn(|c| (0..n).map(|i| 1.0 + (i * (c + 2)) as f64).collect());
-                let by_hand: [f64; 3] =
-                    std::array::from_fn(|c| columns[c].iter().zip(&y).map(|(w, v)| w * v).sum());
-                let sums = dot(&columns, &y);
-                for c in 0..3 {
-                    assert!((sums[c] - by_hand[c]).abs() <= 1e-12 * by_hand[c].abs().max(1.0), "n = {n}");
-                }
-            }
-        }
-    }
 }

@@ -50,9 +50,9 @@ use std::marker::PhantomData;
 
 use crate::color::Xyz;
 use crate::sampling::buckets::{BucketRule, box_means, center};
-use crate::sampling::wavelengths::{FixedWavelengths, Weighted, xyz};
+use crate::sampling::wavelengths::{FixedWavelengths, Weighted};
 use crate::spectrum::pointwise::pointwise_spectrum;
-use crate::spectrum::simd::weighted_sum;
+use crate::spectrum::simd::{column_sums, columns, rounded_columns};
 use crate::spectrum::{Float, LAMBDA_WIDTH, Spectrum};
 
 /// A bucket rule as a type, so that values bucketed by different rules
@@ -78,8 +78,18 @@ pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
     fn wavelengths<T: Float>() -> FixedWavelengths<M, T> {
         let lambda = const { centers::<M>() }.map(T::from_f64);
         let rows = T::choose(Self::ROWS_F32, Self::ROWS_F64);
-        FixedWavelengths(Weighted::at(lambda).fixed(|c, i| rows[i][c]))
+        FixedWavelengths::from_weighted(Weighted::at(lambda).fixed(|c, i| rows[i][c]))
     }
+}
+
+/// A bucket rule's weights as three columns, `w_X`, `w_Y`, `w_Z` of every
+/// bucket (the rows of [`Bucketing::ROWS_F64`] transposed, at compile
+/// time): what [`RegularSpectrum::to_xyz`] sums.
+struct Columns<const M: usize, B>(PhantomData<B>);
+
+impl<const M: usize, B: Bucketing<M>> Columns<M, B> {
+    const F64: &'static [[f64; M]; 3] = &columns(B::ROWS_F64);
+    const F32: &'static [[f32; M]; 3] = &rounded_columns(Self::F64);
 }
 
 /// Point samples at bucket centers ([`BucketRule::Center`]).
@@ -176,13 +186,15 @@ impl<const M: usize, B: Bucketing<M>, T: Float> RegularSpectrum<M, B, T> {
         center(i, M)
     }
 
-    /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`: the one weighted sum of
-    /// every kind of wavelengths, with the bucketed observer times the width
-    /// (one multiply-add per bucket, four lanes wide), summed in `T`.
+    /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`, the bucketed observer times
+    /// the width as three columns of weights (the fixed kinds' sum: three
+    /// multiply-adds per four buckets, or per eight `f32` in AVX2), summed
+    /// in `T`.
     #[inline]
     #[must_use]
     pub fn to_xyz(&self) -> Xyz {
-        xyz(weighted_sum(T::choose(B::ROWS_F32, B::ROWS_F64), &self.values))
+        let [x, y, z] = column_sums(T::choose(Columns::<M, B>::F32, Columns::<M, B>::F64), &self.values);
+        Xyz::new(x.to_f64(), y.to_f64(), z.to_f64())
     }
 }
 

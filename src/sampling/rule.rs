@@ -245,7 +245,7 @@ impl Rule {
         }
         let lambda = std::array::from_fn(|i| T::from_f64(self.lambda[i.min(m - 1)]));
         let weight = |c: usize, i: usize| if i < m { self.scale * self.weights[c][i] } else { 0.0 };
-        Ok(FixedWavelengths(Weighted::at(lambda).fixed(|c, i| T::from_f64(weight(c, i)))))
+        Ok(FixedWavelengths::from_weighted(Weighted::at(lambda).fixed(|c, i| T::from_f64(weight(c, i)))))
     }
 }
 

@@ -70,7 +70,7 @@
 
 use crate::color::Xyz;
 use crate::spectrum::lookup::nearest_nm;
-use crate::spectrum::simd::weighted_sum;
+use crate::spectrum::simd::{column_sums, weighted_sum};
 use crate::spectrum::{Float, SampledSpectrum};
 
 /// What both kinds hold: K wavelengths, their nearest whole nanometres,
@@ -181,7 +181,7 @@ macro_rules! weighted_wavelengths {
             #[inline(always)]
             #[must_use]
             pub fn to_xyz(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> $crate::Xyz {
-                $crate::sampling::wavelengths::xyz(self.0.sums(&v))
+                $crate::sampling::wavelengths::xyz(self.sums(&v))
             }
 
             /// The Y alone, `Σⱼ w_Yⱼ·vⱼ`, in `T` (spectrum·nm, like
@@ -189,7 +189,7 @@ macro_rules! weighted_wavelengths {
             #[inline(always)]
             #[must_use]
             pub fn y(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> T {
-                self.0.sums(&v)[1]
+                self.sums(&v)[1]
             }
 
             /// The luminance in the units of `v`: [`y`](Self::y) over
@@ -239,7 +239,7 @@ macro_rules! weighted_wavelengths {
             /// fitted in `f64`, for a renderer in `f32`).
             #[must_use]
             pub fn cast<U: $crate::spectrum::Float>(&self) -> $name<K, U> {
-                $name(self.0.cast())
+                $name::from_weighted(self.0.cast())
             }
         }
 
@@ -261,10 +261,30 @@ pub(crate) use weighted_wavelengths;
 
 /// M fixed wavelengths (nm) with their XYZ weights and no density: bucket
 /// centres or a fitted rule, for a renderer's inner loop.
+///
+/// Besides the rows, the weights are kept as three columns (`w_X`, `w_Y`,
+/// `w_Z` of every wavelength), which is how their sums are computed: three
+/// multiply-adds per four (AVX2: eight `f32`) wavelengths instead of one
+/// per wavelength, half the work at M = 16.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FixedWavelengths<const M: usize, T: Float = f64>(pub(crate) Weighted<M, T>);
+pub struct FixedWavelengths<const M: usize, T: Float = f64>(pub(crate) Weighted<M, T>, [[T; M]; 3]);
 
 weighted_wavelengths!(FixedWavelengths);
+
+impl<const M: usize, T: Float> FixedWavelengths<M, T> {
+    /// Wavelengths with fixed weights (`w₀` = 0), their columns made.
+    pub(crate) fn from_weighted(w: Weighted<M, T>) -> Self {
+        let columns = std::array::from_fn(|c| w.rows.map(|row| row[c]));
+        FixedWavelengths(w, columns)
+    }
+
+    /// `[X, Y, Z, 0]` of values `v`, from the columns.
+    #[inline(always)]
+    fn sums(&self, v: &SampledSpectrum<M, T>) -> [T; 4] {
+        let [x, y, z] = column_sums(&self.1, &v.values);
+        [x, y, z, T::ZERO]
+    }
+}
 
 /// A light's emission times the XYZ weights of some wavelengths (see
 /// `emission` on [`HeroSample`](super::HeroSample) and

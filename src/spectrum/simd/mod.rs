@@ -27,6 +27,10 @@
 use crate::spectrum::float::Float;
 use crate::spectrum::float::sealed::Vector;
 
+pub(crate) mod slices;
+#[cfg(target_arch = "x86_64")]
+mod x86;
+
 /// `f(a, b)` lane by lane over `N` values, four per vector.
 #[inline(always)]
 pub(crate) fn zip<T: Float, const N: usize>(
@@ -77,14 +81,67 @@ pub(crate) fn weighted_sum<T: Float, const K: usize>(rows: &[[T; 4]; K], v: &[T;
     T::array((acc[0] + acc[2]) + (acc[1] + acc[3]))
 }
 
+/// `[Σⱼ c₀ⱼ·vⱼ, Σⱼ c₁ⱼ·vⱼ, Σⱼ c₂ⱼ·vⱼ]`: three columns of weights against
+/// `M` values (the fixed kinds' X, Y and Z), four values per vector, a
+/// count that is not a multiple of four padded with zeros; per column,
+/// four partial sums added as `(a₀ + a₂) + (a₁ + a₃)`.
+#[inline(always)]
+pub(crate) fn column_sums<T: Float, const M: usize>(columns: &[[T; M]; 3], v: &[T; M]) -> [T; 3] {
+    let mut acc = [T::splat(T::from_f64(-0.0)); 3];
+    let (v4, v_rest) = v.as_chunks::<4>();
+    let w = columns.each_ref().map(|c| c.as_chunks::<4>());
+    for (k, vk) in v4.iter().enumerate() {
+        let vk = T::v4(*vk);
+        for c in 0..3 {
+            acc[c] = T::v4(w[c].0[k]).mul_add(vk, acc[c]);
+        }
+    }
+    if !v_rest.is_empty() {
+        let vk = T::v4(padded(v_rest));
+        for c in 0..3 {
+            acc[c] = T::v4(padded(w[c].1)).mul_add(vk, acc[c]);
+        }
+    }
+    acc.map(|a| {
+        let [a0, a1, a2, a3] = T::array(a);
+        (a0 + a2) + (a1 + a3)
+    })
+}
+
+/// Weight rows `[w_X, w_Y, w_Z, _]` as three columns, at compile time.
+pub(crate) const fn columns<const M: usize>(rows: &[[f64; 4]; M]) -> [[f64; M]; 3] {
+    let mut out = [[0.0; M]; 3];
+    let mut j = 0;
+    while j < M {
+        out[0][j] = rows[j][0];
+        out[1][j] = rows[j][1];
+        out[2][j] = rows[j][2];
+        j += 1;
+    }
+    out
+}
+
+/// Columns rounded to `f32`, at compile time.
+pub(crate) const fn rounded_columns<const M: usize>(columns: &[[f64; M]; 3]) -> [[f32; M]; 3] {
+    let mut out = [[0.0; M]; 3];
+    let mut j = 0;
+    while j < M {
+        out[0][j] = columns[0][j] as f32;
+        out[1][j] = columns[1][j] as f32;
+        out[2][j] = columns[2][j] as f32;
+        j += 1;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
-    use super::{map, weighted_sum, zip};
+    use super::{column_sums, map, weighted_sum, zip};
     use crate::spectrum::float::sealed::Sealed;
 
     /// Every count from 1 to 13, 16 and 21 (past four accumulators of
     /// four): whole vectors and padded tails give the scalar results
-    /// (exact for +, −, ×, ÷; within rounding for the sums).
+    /// (exact for +, −, ×, ÷; within rounding for the row and column sums).
     #[test]
     fn lanes_agree_with_scalars() {
         fn check<const N: usize>() {
@@ -100,6 +157,19 @@ mod tests {
             for c in 0..4 {
                 let scalar: f64 = (0..N).map(|j| rows[j][c] * b[j]).sum();
                 assert!((sum[c] - scalar).abs() <= 1e-14 * scalar.abs().max(1.0), "N = {N}, lane {c}");
+            }
+            let columns = super::columns(&rows);
+            let (sums, sums32) = (
+                column_sums(&columns, &b),
+                column_sums(&super::rounded_columns(&columns), &b.map(|v| v as f32)),
+            );
+            for c in 0..3 {
+                let scalar: f64 = (0..N).map(|j| rows[j][c] * b[j]).sum();
+                assert!((sums[c] - scalar).abs() <= 1e-14 * scalar.abs().max(1.0), "N = {N}, column {c}");
+                assert!(
+                    (f64::from(sums32[c]) - scalar).abs() <= 1e-5 * scalar.abs().max(1.0),
+                    "N = {N}, column {c}"
+                );
             }
         }
         check::<1>();

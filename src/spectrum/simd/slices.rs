@@ -1,0 +1,197 @@
+//! The exact reference's sums over a reflectance's samples (a count known
+//! at run time): [`Sums::dot`], three columns of weights against the
+//! samples, and [`Sums::spread`], the smallest and largest sample and the
+//! largest second difference (what proves that no cubic segment leaves
+//! [0, 1]). [`PreparedLight::batch`](crate::sampling::PreparedLight::batch)
+//! calls both once per reflectance.
+//!
+//! Two forms, chosen once per batch by [`Sums::detect`]: four samples per
+//! `wide::f64x4` (two SSE2 registers on a default x86-64 build), and on
+//! x86-64 processors with AVX2 and FMA one register and fused
+//! multiply-adds ([`super::x86`]). `spread` gives the same bits in both;
+//! `dot` differs in the last bits (fused, summed in another order).
+//!
+//! ```
+//! // (crate-private; the public face is PreparedLight::batch)
+//! use speclab::{data::{lights, patches}, sampling::{PreparedLight, reference}};
+//! let a = PreparedLight::for_grid(&lights::A, patches::G4.lambda(), patches::G4.interpolation())?;
+//! let mut out = [speclab::Xyz::ZERO; 1];
+//! a.batch(patches::G4.values(), &mut out)?;
+//! let exact = reference::xyz(&lights::A, &patches::G4);
+//! assert!((out[0].y - exact.y).abs() <= 1e-12 * exact.y);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use wide::f64x4;
+
+/// Which instructions a batch's sums use.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Sums {
+    /// `wide`'s four lanes, on any processor.
+    Portable,
+    /// AVX2 and FMA, where the processor has them.
+    #[cfg(target_arch = "x86_64")]
+    Avx2(super::x86::Avx2Fma),
+}
+
+impl Sums {
+    /// The fastest form this processor runs.
+    #[inline]
+    pub(crate) fn detect() -> Sums {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(avx2) = super::x86::Avx2Fma::detect() {
+            return Sums::Avx2(avx2);
+        }
+        Sums::Portable
+    }
+
+    /// `Σᵢ wᵢ·yᵢ` per channel, over the samples that have weights.
+    #[inline(always)]
+    pub(crate) fn dot(self, columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
+        match self {
+            Sums::Portable => dot(columns, y),
+            #[cfg(target_arch = "x86_64")]
+            Sums::Avx2(avx2) => avx2.dot(columns, y),
+        }
+    }
+
+    /// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
+    /// (see [`spread`]); `y` holds at least one sample.
+    #[inline(always)]
+    pub(crate) fn spread(self, y: &[f64]) -> (f64, f64, f64) {
+        match self {
+            Sums::Portable => spread(y),
+            #[cfg(target_arch = "x86_64")]
+            Sums::Avx2(avx2) => avx2.spread(y),
+        }
+    }
+}
+
+/// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|, four
+/// samples per vector (`wide`'s `f64x4`). With every middle segment's
+/// margin C, `lo − C·second ≥ 0` and `hi + C·second ≤ 1` clear them all: a
+/// segment's inner Bernstein coefficients lie within C·second of its
+/// linear interpolation, itself within [lo, hi]. (NaN slips through here;
+/// the caller checks the sum.)
+#[inline(always)]
+pub(crate) fn spread(y: &[f64]) -> (f64, f64, f64) {
+    let (mut lo, mut hi, mut second) = (f64x4::splat(y[0]), f64x4::splat(y[0]), f64x4::ZERO);
+    let mut i = 0;
+    while let Some(six) = window(y, i) {
+        let [a, b, c] = shifted(six).map(f64x4::new);
+        lo = lo.fast_min(a).fast_min(c);
+        hi = hi.fast_max(a).fast_max(c);
+        second = second.fast_max((a - b - b + c).abs());
+        i = next(i, y.len());
+    }
+    finish_spread(y, [lo, hi, second].map(f64x4::to_array))
+}
+
+/// Runs of six samples from 0, 4, 8, … and, where those leave some out,
+/// from n − 6 (overlapping the last: the smallest, largest and largest
+/// second difference do not mind seeing a sample twice). Together their
+/// first and last four samples are every sample, and their second
+/// differences (from the first, second and third four) every second
+/// difference. None where there are fewer than six samples. Walked as
+/// `let mut i = 0; while let Some(six) = window(y, i) { …; i = next(i, n) }`.
+#[inline(always)]
+pub(crate) fn window(y: &[f64], i: usize) -> Option<&[f64; 6]> {
+    y.get(i..)?.first_chunk::<6>()
+}
+
+/// The start of the window after the one at `i`, of `n` samples (see
+/// [`window`]): `i + 4`, or `n − 6` to cover the last samples, or `n`
+/// (none).
+#[inline(always)]
+pub(crate) fn next(i: usize, n: usize) -> usize {
+    if i + 10 <= n {
+        i + 4
+    } else if i + 6 < n {
+        n - 6
+    } else {
+        n
+    }
+}
+
+/// Six samples as three runs of four, from the first, second and third.
+#[inline(always)]
+pub(crate) fn shifted(six: &[f64; 6]) -> [[f64; 4]; 3] {
+    std::array::from_fn(|o| std::array::from_fn(|l| six[o + l]))
+}
+
+/// [`spread`] from the lanes of its vectors (`[lo, hi, second]`, four of
+/// each, from [`window`]s), and where there were no windows (fewer than
+/// six samples) from the samples one at a time.
+#[inline(always)]
+pub(crate) fn finish_spread(y: &[f64], [lo, hi, second]: [[f64; 4]; 3]) -> (f64, f64, f64) {
+    let n = y.len();
+    let fold = |lanes: [f64; 4], keep: fn(f64, f64) -> bool| {
+        lanes.into_iter().reduce(|m, v| if keep(v, m) { v } else { m }).unwrap_or(0.0)
+    };
+    let (mut lo, mut hi, mut second) =
+        (fold(lo, |v, m| v < m), fold(hi, |v, m| v > m), fold(second, |v, m| v > m));
+    let from = if n >= 6 { n } else { 0 };
+    for j in from..n {
+        lo = if y[j] < lo { y[j] } else { lo };
+        hi = if y[j] > hi { y[j] } else { hi };
+        if j + 2 < n {
+            let d = (y[j] - 2.0 * y[j + 1] + y[j + 2]).abs();
+            second = if d > second { d } else { second };
+        }
+    }
+    (lo, hi, second)
+}
+
+/// `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns, four samples per
+/// vector (`wide`'s `f64x4`), the rest one at a time.
+#[inline(always)]
+pub(crate) fn dot(columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
+    let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
+    let (y4, y_rest) = y[..n].as_chunks::<4>();
+    let [(x4, x_rest), (g4, g_rest), (z4, z_rest)] = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
+    let mut acc = [f64x4::ZERO; 3];
+    for (((y, x), g), z) in y4.iter().zip(x4).zip(g4).zip(z4) {
+        let y = f64x4::new(*y);
+        acc[0] = f64x4::new(*x).mul_add(y, acc[0]);
+        acc[1] = f64x4::new(*g).mul_add(y, acc[1]);
+        acc[2] = f64x4::new(*z).mul_add(y, acc[2]);
+    }
+    let mut sum = acc.map(f64x4::reduce_add);
+    for (i, &y) in y_rest.iter().enumerate() {
+        sum[0] += x_rest[i] * y;
+        sum[1] += g_rest[i] * y;
+        sum[2] += z_rest[i] * y;
+    }
+    sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Sums, dot, spread};
+
+    /// The four-lane forms give what a scalar walk gives, for every length
+    /// from 2 to 40 (whole vectors and tails) and samples that put the
+    /// extremes and the largest second difference anywhere.
+    #[test]
+    fn four_lanes_agree_with_one_at_a_time() {
+        for n in 2..=40 {
+            for shift in 0..5 {
+                let y: Vec<f64> = (0..n).map(|i| ((i * 7 + shift * 3) % 11) as f64 / 10.0).collect();
+                let lo = y.iter().copied().fold(f64::INFINITY, f64::min);
+                let hi = y.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                let second = y.windows(3).map(|w| (w[0] - 2.0 * w[1] + w[2]).abs()).fold(0.0, f64::max);
+                assert_eq!(spread(&y), (lo, hi, second), "n = {n}, shift {shift}");
+                assert_eq!(Sums::detect().spread(&y), (lo, hi, second), "n = {n}, shift {shift}");
+                let columns: [Vec<f64>; 3] =
+                    std::array::from_fn(|c| (0..n).map(|i| 1.0 + (i * (c + 2)) as f64).collect());
+                let by_hand: [f64; 3] =
+                    std::array::from_fn(|c| columns[c].iter().zip(&y).map(|(w, v)| w * v).sum());
+                for sums in [dot(&columns, &y), Sums::detect().dot(&columns, &y)] {
+                    for c in 0..3 {
+                        assert!((sums[c] - by_hand[c]).abs() <= 1e-12 * by_hand[c].abs().max(1.0), "n = {n}");
+                    }
+                }
+            }
+        }
+    }
+}
