@@ -149,10 +149,9 @@ impl<L: Spectrum> PreparedLight<L> {
         let w = self.weights.columns();
         let sums = Sums::detect();
         for (i, (y, o)) in r.chunks_exact(n).zip(out.iter_mut()).enumerate() {
-            let mut sum = sums.dot(w, y);
+            let (mut sum, (lo, hi, second)) = sums.dot_spread(w, y);
             let clear = match (scale, middle) {
                 (Some(scale), Some(middle)) => {
-                    let (lo, hi, second) = sums.spread(y);
                     let ends = end_clear(y, 0, 0, margins[0] * scale)
                         & end_clear(y, n - 2, n - 4, margins[n - 2] * scale);
                     (lo - middle * second >= 0.0) & (hi + middle * second <= 1.0) & ends

@@ -1,15 +1,15 @@
 //! The exact reference's sums over a reflectance's samples (a count known
-//! at run time): [`Sums::dot`], three columns of weights against the
-//! samples, and [`Sums::spread`], the smallest and largest sample and the
-//! largest second difference (what proves that no cubic segment leaves
-//! [0, 1]). [`PreparedLight::batch`](crate::sampling::PreparedLight::batch)
-//! calls both once per reflectance.
+//! at run time), in one walk: [`Sums::dot_spread`], three columns of
+//! weights against the samples, and the smallest and largest sample and
+//! the largest second difference (what proves that no cubic segment
+//! leaves [0, 1]). [`PreparedLight::batch`](crate::sampling::PreparedLight::batch)
+//! calls it once per reflectance.
 //!
 //! Two forms, chosen once per batch by [`Sums::detect`]: four samples per
 //! `wide::f64x4` (two SSE2 registers on a default x86-64 build), and on
 //! x86-64 processors with AVX2 and FMA one register and fused
-//! multiply-adds ([`super::x86`]). `spread` gives the same bits in both;
-//! `dot` differs in the last bits (fused, summed in another order).
+//! multiply-adds ([`super::x86`]). The spread has the same bits in both;
+//! the sums differ in the last bits (fused, summed in another order).
 //!
 //! ```
 //! // (crate-private; the public face is PreparedLight::batch)
@@ -45,72 +45,79 @@ impl Sums {
         Sums::Portable
     }
 
-    /// `Σᵢ wᵢ·yᵢ` per channel, over the samples that have weights.
+    /// `Σᵢ wᵢ·yᵢ` per channel over the samples that have weights, and
+    /// the smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
+    /// (see [`dot_spread`]).
     #[inline(always)]
-    pub(crate) fn dot(self, columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
+    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
         match self {
-            Sums::Portable => dot(columns, y),
+            Sums::Portable => dot_spread(columns, y),
             #[cfg(target_arch = "x86_64")]
-            Sums::Avx2(avx2) => avx2.dot(columns, y),
-        }
-    }
-
-    /// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
-    /// (see [`spread`]); `y` holds at least one sample.
-    #[inline(always)]
-    pub(crate) fn spread(self, y: &[f64]) -> (f64, f64, f64) {
-        match self {
-            Sums::Portable => spread(y),
-            #[cfg(target_arch = "x86_64")]
-            Sums::Avx2(avx2) => avx2.spread(y),
+            Sums::Avx2(avx2) => avx2.dot_spread(columns, y),
         }
     }
 }
 
-/// The smallest and largest sample and the largest |y₀ − 2y₁ + y₂|, four
-/// samples per vector (`wide`'s `f64x4`). With every middle segment's
-/// margin C, `lo − C·second ≥ 0` and `hi + C·second ≤ 1` clear them all: a
-/// segment's inner Bernstein coefficients lie within C·second of its
-/// linear interpolation, itself within [lo, hi]. (NaN slips through here;
-/// the caller checks the sum.)
+/// In one walk over the samples, four per vector (`wide`'s `f64x4`):
+///
+/// - `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns, over the samples
+///   that have weights (the rest of a vector one at a time);
+/// - the smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
+///   ([`window`]s of six, each vector of the sum the first four of one).
+///   With every middle segment's margin C, `lo − C·second ≥ 0` and
+///   `hi + C·second ≤ 1` clear them all: a segment's inner Bernstein
+///   coefficients lie within C·second of its linear interpolation, itself
+///   within [lo, hi]. (NaN slips through here; the caller checks the sum.)
 #[inline(always)]
-pub(crate) fn spread(y: &[f64]) -> (f64, f64, f64) {
-    let (mut lo, mut hi, mut second) = (f64x4::splat(y[0]), f64x4::splat(y[0]), f64x4::ZERO);
-    let mut i = 0;
-    while let Some(six) = window(y, i) {
+pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
+    let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
+    let (y4, y_rest) = y[..n].as_chunks::<4>();
+    let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
+    let mut acc = [f64x4::ZERO; 3];
+    let first = f64x4::splat(y.first().copied().unwrap_or(0.0));
+    let mut spread = [first, first, f64x4::ZERO];
+    let widen = |[lo, hi, second]: [f64x4; 3], six: &[f64; 6]| {
         let [a, b, c] = shifted(six).map(f64x4::new);
-        lo = lo.fast_min(a).fast_min(c);
-        hi = hi.fast_max(a).fast_max(c);
-        second = second.fast_max((a - b - b + c).abs());
-        i = next(i, y.len());
+        [lo.fast_min(a).fast_min(c), hi.fast_max(a).fast_max(c), second.fast_max((a - b - b + c).abs())]
+    };
+    for (k, yk) in y4.iter().enumerate() {
+        let a = f64x4::new(*yk);
+        for c in 0..3 {
+            acc[c] = f64x4::new(w[c].0[k]).mul_add(a, acc[c]);
+        }
+        if let Some(six) = window(y, 4 * k) {
+            spread = widen(spread, six);
+        }
     }
-    finish_spread(y, [lo, hi, second].map(f64x4::to_array))
+    if let Some(six) = last_window(y) {
+        spread = widen(spread, six);
+    }
+    let mut sum = acc.map(f64x4::reduce_add);
+    for (i, &y) in y_rest.iter().enumerate() {
+        for c in 0..3 {
+            sum[c] += w[c].1[i] * y;
+        }
+    }
+    (sum, finish_spread(y, spread.map(f64x4::to_array)))
 }
 
-/// Runs of six samples from 0, 4, 8, … and, where those leave some out,
-/// from n − 6 (overlapping the last: the smallest, largest and largest
-/// second difference do not mind seeing a sample twice). Together their
+/// Six samples from `y[i]`: the windows from 0, 4, 8, … while there are
+/// six, and where those leave some out, [`last_window`]. Together their
 /// first and last four samples are every sample, and their second
 /// differences (from the first, second and third four) every second
-/// difference. None where there are fewer than six samples. Walked as
-/// `let mut i = 0; while let Some(six) = window(y, i) { …; i = next(i, n) }`.
+/// difference. None where there are fewer than six samples.
 #[inline(always)]
 pub(crate) fn window(y: &[f64], i: usize) -> Option<&[f64; 6]> {
     y.get(i..)?.first_chunk::<6>()
 }
 
-/// The start of the window after the one at `i`, of `n` samples (see
-/// [`window`]): `i + 4`, or `n − 6` to cover the last samples, or `n`
-/// (none).
+/// The window from n − 6, where the windows from multiples of four stop
+/// short of the end (it overlaps the last of them: the smallest, largest
+/// and largest second difference do not mind seeing a sample twice).
 #[inline(always)]
-pub(crate) fn next(i: usize, n: usize) -> usize {
-    if i + 10 <= n {
-        i + 4
-    } else if i + 6 < n {
-        n - 6
-    } else {
-        n
-    }
+pub(crate) fn last_window(y: &[f64]) -> Option<&[f64; 6]> {
+    let i = y.len().checked_sub(6).filter(|i| i % 4 != 0)?;
+    window(y, i)
 }
 
 /// Six samples as three runs of four, from the first, second and third.
@@ -119,7 +126,7 @@ pub(crate) fn shifted(six: &[f64; 6]) -> [[f64; 4]; 3] {
     std::array::from_fn(|o| std::array::from_fn(|l| six[o + l]))
 }
 
-/// [`spread`] from the lanes of its vectors (`[lo, hi, second]`, four of
+/// The spread from the lanes of its vectors (`[lo, hi, second]`, four of
 /// each, from [`window`]s), and where there were no windows (fewer than
 /// six samples) from the samples one at a time.
 #[inline(always)]
@@ -142,36 +149,14 @@ pub(crate) fn finish_spread(y: &[f64], [lo, hi, second]: [[f64; 4]; 3]) -> (f64,
     (lo, hi, second)
 }
 
-/// `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns, four samples per
-/// vector (`wide`'s `f64x4`), the rest one at a time.
-#[inline(always)]
-pub(crate) fn dot(columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
-    let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
-    let (y4, y_rest) = y[..n].as_chunks::<4>();
-    let [(x4, x_rest), (g4, g_rest), (z4, z_rest)] = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
-    let mut acc = [f64x4::ZERO; 3];
-    for (((y, x), g), z) in y4.iter().zip(x4).zip(g4).zip(z4) {
-        let y = f64x4::new(*y);
-        acc[0] = f64x4::new(*x).mul_add(y, acc[0]);
-        acc[1] = f64x4::new(*g).mul_add(y, acc[1]);
-        acc[2] = f64x4::new(*z).mul_add(y, acc[2]);
-    }
-    let mut sum = acc.map(f64x4::reduce_add);
-    for (i, &y) in y_rest.iter().enumerate() {
-        sum[0] += x_rest[i] * y;
-        sum[1] += g_rest[i] * y;
-        sum[2] += z_rest[i] * y;
-    }
-    sum
-}
-
 #[cfg(test)]
 mod tests {
-    use super::{Sums, dot, spread};
+    use super::{Sums, dot_spread};
 
-    /// The four-lane forms give what a scalar walk gives, for every length
-    /// from 2 to 40 (whole vectors and tails) and samples that put the
-    /// extremes and the largest second difference anywhere.
+    /// Both forms give what a scalar walk gives, for every length from 2
+    /// to 40 (whole vectors, tails, with and without the last window) and
+    /// samples that put the extremes and the largest second difference
+    /// anywhere: the spread to the bit, the sums within rounding.
     #[test]
     fn four_lanes_agree_with_one_at_a_time() {
         for n in 2..=40 {
@@ -180,13 +165,12 @@ mod tests {
                 let lo = y.iter().copied().fold(f64::INFINITY, f64::min);
                 let hi = y.iter().copied().fold(f64::NEG_INFINITY, f64::max);
                 let second = y.windows(3).map(|w| (w[0] - 2.0 * w[1] + w[2]).abs()).fold(0.0, f64::max);
-                assert_eq!(spread(&y), (lo, hi, second), "n = {n}, shift {shift}");
-                assert_eq!(Sums::detect().spread(&y), (lo, hi, second), "n = {n}, shift {shift}");
                 let columns: [Vec<f64>; 3] =
                     std::array::from_fn(|c| (0..n).map(|i| 1.0 + (i * (c + 2)) as f64).collect());
                 let by_hand: [f64; 3] =
                     std::array::from_fn(|c| columns[c].iter().zip(&y).map(|(w, v)| w * v).sum());
-                for sums in [dot(&columns, &y), Sums::detect().dot(&columns, &y)] {
+                for (sums, spread) in [dot_spread(&columns, &y), Sums::detect().dot_spread(&columns, &y)] {
+                    assert_eq!(spread, (lo, hi, second), "n = {n}, shift {shift}");
                     for c in 0..3 {
                         assert!((sums[c] - by_hand[c]).abs() <= 1e-12 * by_hand[c].abs().max(1.0), "n = {n}");
                     }

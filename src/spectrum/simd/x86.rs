@@ -10,8 +10,8 @@
 //! needs: only `detect` makes one, so a kernel cannot run where the
 //! instructions are missing.
 //!
-//! [`Avx2Fma::dot`] and [`Avx2Fma::spread`] are [`super::slices`]'s sums,
-//! four `f64` per instruction. They are worth a call: a batch reads its
+//! [`Avx2Fma::dot_spread`] is [`super::slices`]'s walk, four `f64` per
+//! instruction. They are worth a call: a batch reads its
 //! samples from memory written long before. The per-sample sums of a few
 //! values (`RegularSpectrum`, fixed wavelengths) stay in `wide`'s portable
 //! form: there a call per sum measured slower (17 ns against 6 for
@@ -41,7 +41,7 @@ use std::arch::x86_64::{
 };
 use std::sync::atomic::{AtomicU8, Ordering};
 
-use super::slices::{finish_spread, next, shifted, window};
+use super::slices::{finish_spread, last_window, window};
 
 /// Proof that this processor has AVX2 and FMA (see [`Avx2Fma::detect`]).
 #[derive(Clone, Copy, Debug)]
@@ -69,18 +69,11 @@ impl Avx2Fma {
         yes.then_some(Avx2Fma(()))
     }
 
-    /// See [`super::slices::Sums::dot`].
+    /// See [`super::slices::Sums::dot_spread`].
     #[inline]
-    pub(crate) fn dot(self, columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
+    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
         // SAFETY: `self` exists only where the processor has AVX2 and FMA.
-        unsafe { dot(columns, y) }
-    }
-
-    /// See [`super::slices::Sums::spread`].
-    #[inline]
-    pub(crate) fn spread(self, y: &[f64]) -> (f64, f64, f64) {
-        // SAFETY: as above.
-        unsafe { spread(y) }
+        unsafe { dot_spread(columns, y) }
     }
 }
 
@@ -93,29 +86,36 @@ fn ask() -> bool {
     yes
 }
 
-/// `Σᵢ wᵢ·yᵢ` per channel: two accumulators per channel (even and odd
-/// vectors of four samples), the rest one at a time.
+/// The portable `dot_spread` with one register per vector of four and
+/// fused multiply-adds: two accumulators per channel (even and odd
+/// vectors), named so that they stay in registers; the same minimum,
+/// maximum and absolute value, so the same bits for the spread.
 #[target_feature(enable = "avx2,fma")]
-fn dot(columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
+fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
     let (y4, y_rest) = y[..n].as_chunks::<4>();
     let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
-    // Named accumulators, so that they stay in registers.
     let (mut even, mut odd) = ([_mm256_setzero_pd(); 3], [_mm256_setzero_pd(); 3]);
+    let first = _mm256_set1_pd(y.first().copied().unwrap_or(0.0));
+    let mut spread = [first, first, _mm256_setzero_pd()];
     let (pairs, last) = y4.as_chunks::<2>();
     for (p, [a, b]) in pairs.iter().enumerate() {
-        let (a, b) = (load(a), load(b));
+        let (k, a, b) = (2 * p, load(a), load(b));
         for c in 0..3 {
-            even[c] = _mm256_fmadd_pd(load(&w[c].0[2 * p]), a, even[c]);
-            odd[c] = _mm256_fmadd_pd(load(&w[c].0[2 * p + 1]), b, odd[c]);
+            even[c] = _mm256_fmadd_pd(load(&w[c].0[k]), a, even[c]);
+            odd[c] = _mm256_fmadd_pd(load(&w[c].0[k + 1]), b, odd[c]);
         }
+        spread = widen(spread, window(y, 4 * k));
+        spread = widen(spread, window(y, 4 * k + 4));
     }
     if let [a] = last {
-        let (a, k) = (load(a), y4.len() - 1);
+        let (k, a) = (y4.len() - 1, load(a));
         for c in 0..3 {
             even[c] = _mm256_fmadd_pd(load(&w[c].0[k]), a, even[c]);
         }
+        spread = widen(spread, window(y, 4 * k));
     }
+    spread = widen(spread, last_window(y));
     let mut sum = [0.0; 3];
     for c in 0..3 {
         sum[c] = lane_sum(_mm256_add_pd(even[c], odd[c]));
@@ -123,25 +123,28 @@ fn dot(columns: &[Vec<f64>; 3], y: &[f64]) -> [f64; 3] {
             sum[c] = w[c].1[i].mul_add(y, sum[c]);
         }
     }
-    sum
+    let [lo, hi, second] = spread;
+    (sum, finish_spread(y, [to_array(lo), to_array(hi), to_array(second)]))
 }
 
-/// The portable `spread`'s vectors in one register each (the same
-/// minimum, maximum and absolute value, so the same bits).
+/// `[lo, hi, second]` widened by a window of six samples, if there is one.
+#[inline]
 #[target_feature(enable = "avx2,fma")]
-fn spread(y: &[f64]) -> (f64, f64, f64) {
-    let (mut lo, mut hi, mut second) = (_mm256_set1_pd(y[0]), _mm256_set1_pd(y[0]), _mm256_setzero_pd());
-    let sign = _mm256_set1_pd(-0.0);
-    let mut i = 0;
-    while let Some(six) = window(y, i) {
-        let [a, b, c] = shifted(six).map(|v| load(&v));
-        lo = _mm256_min_pd(_mm256_min_pd(lo, a), c);
-        hi = _mm256_max_pd(_mm256_max_pd(hi, a), c);
-        let d = _mm256_add_pd(_mm256_sub_pd(_mm256_sub_pd(a, b), b), c);
-        second = _mm256_max_pd(second, _mm256_andnot_pd(sign, d));
-        i = next(i, y.len());
-    }
-    finish_spread(y, [to_array(lo), to_array(hi), to_array(second)])
+fn widen([lo, hi, second]: [__m256d; 3], six: Option<&[f64; 6]>) -> [__m256d; 3] {
+    let Some(six) = six else {
+        return [lo, hi, second];
+    };
+    let [a, b, c] = [0, 1, 2].map(|from| {
+        // SAFETY: four readable f64 from `six[from]`, `from + 4 ≤ 6`; an
+        // unaligned load.
+        unsafe { _mm256_loadu_pd(six[from..].as_ptr()) }
+    });
+    let d = _mm256_add_pd(_mm256_sub_pd(_mm256_sub_pd(a, b), b), c);
+    [
+        _mm256_min_pd(_mm256_min_pd(lo, a), c),
+        _mm256_max_pd(_mm256_max_pd(hi, a), c),
+        _mm256_max_pd(second, _mm256_andnot_pd(_mm256_set1_pd(-0.0), d)),
+    ]
 }
 
 /// Four `f64` in a register.
