@@ -25,7 +25,7 @@
 
 use crate::color::Xyz;
 use crate::error::{Error, Field, Invalid, SampleError};
-use crate::spectrum::simd::slices::Sums;
+use crate::spectrum::simd::slices::{Spread, Sums};
 use crate::spectrum::weights::{self, Weights};
 use crate::spectrum::{Interpolation, Role, Spectrum, interp};
 use crate::spectrum::{integrate, validate};
@@ -149,7 +149,7 @@ impl<L: Spectrum> PreparedLight<L> {
         let w = self.weights.columns();
         let sums = Sums::detect();
         for (i, (y, o)) in r.chunks_exact(n).zip(out.iter_mut()).enumerate() {
-            let (mut sum, (lo, hi, second)) = sums.dot_spread(w, y);
+            let (mut sum, Spread { lo, hi, second }) = sums.dot_spread(w, y);
             let clear = match (scale, middle) {
                 (Some(scale), Some(middle)) => {
                     let ends = end_clear(y, 0, 0, margins[0] * scale)

@@ -49,13 +49,25 @@ impl Sums {
     /// the smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
     /// (see [`dot_spread`]).
     #[inline(always)]
-    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
+    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
         match self {
             Sums::Portable => dot_spread(columns, y),
             #[cfg(target_arch = "x86_64")]
             Sums::Avx2(avx2) => avx2.dot_spread(columns, y),
         }
     }
+}
+
+/// A reflectance's smallest and largest sample and largest second
+/// difference |y₀ − 2y₁ + y₂|.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Spread {
+    /// The smallest sample.
+    pub(crate) lo: f64,
+    /// The largest sample.
+    pub(crate) hi: f64,
+    /// The largest |y₀ − 2y₁ + y₂|.
+    pub(crate) second: f64,
 }
 
 /// In one walk over the samples, four per vector (`wide`'s `f64x4`):
@@ -69,7 +81,7 @@ impl Sums {
 ///   coefficients lie within C·second of its linear interpolation, itself
 ///   within [lo, hi]. (NaN slips through here; the caller checks the sum.)
 #[inline(always)]
-pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
+pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
     let (y4, y_rest) = y[..n].as_chunks::<4>();
     let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
@@ -130,7 +142,7 @@ pub(crate) fn shifted(six: &[f64; 6]) -> [[f64; 4]; 3] {
 /// each, from [`window`]s), and where there were no windows (fewer than
 /// six samples) from the samples one at a time.
 #[inline(always)]
-pub(crate) fn finish_spread(y: &[f64], [lo, hi, second]: [[f64; 4]; 3]) -> (f64, f64, f64) {
+pub(crate) fn finish_spread(y: &[f64], [lo, hi, second]: [[f64; 4]; 3]) -> Spread {
     let n = y.len();
     let fold = |lanes: [f64; 4], keep: fn(f64, f64) -> bool| {
         lanes.into_iter().reduce(|m, v| if keep(v, m) { v } else { m }).unwrap_or(0.0)
@@ -146,12 +158,12 @@ pub(crate) fn finish_spread(y: &[f64], [lo, hi, second]: [[f64; 4]; 3]) -> (f64,
             second = if d > second { d } else { second };
         }
     }
-    (lo, hi, second)
+    Spread { lo, hi, second }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{Sums, dot_spread};
+    use super::{Spread, Sums, dot_spread};
 
     /// Both forms give what a scalar walk gives, for every length from 2
     /// to 40 (whole vectors, tails, with and without the last window) and
@@ -170,7 +182,7 @@ mod tests {
                 let by_hand: [f64; 3] =
                     std::array::from_fn(|c| columns[c].iter().zip(&y).map(|(w, v)| w * v).sum());
                 for (sums, spread) in [dot_spread(&columns, &y), Sums::detect().dot_spread(&columns, &y)] {
-                    assert_eq!(spread, (lo, hi, second), "n = {n}, shift {shift}");
+                    assert_eq!(spread, Spread { lo, hi, second }, "n = {n}, shift {shift}");
                     for c in 0..3 {
                         assert!((sums[c] - by_hand[c]).abs() <= 1e-12 * by_hand[c].abs().max(1.0), "n = {n}");
                     }

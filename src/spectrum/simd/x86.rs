@@ -41,7 +41,7 @@ use std::arch::x86_64::{
 };
 use std::sync::atomic::{AtomicU8, Ordering};
 
-use super::slices::{finish_spread, last_window, window};
+use super::slices::{Spread, finish_spread, last_window, window};
 
 /// Proof that this processor has AVX2 and FMA (see [`Avx2Fma::detect`]).
 #[derive(Clone, Copy, Debug)]
@@ -71,7 +71,7 @@ impl Avx2Fma {
 
     /// See [`super::slices::Sums::dot_spread`].
     #[inline]
-    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
+    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
         // SAFETY: `self` exists only where the processor has AVX2 and FMA.
         unsafe { dot_spread(columns, y) }
     }
@@ -91,7 +91,7 @@ fn ask() -> bool {
 /// vectors), named so that they stay in registers; the same minimum,
 /// maximum and absolute value, so the same bits for the spread.
 #[target_feature(enable = "avx2,fma")]
-fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], (f64, f64, f64)) {
+fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
     let (y4, y_rest) = y[..n].as_chunks::<4>();
     let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
