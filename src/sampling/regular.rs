@@ -15,8 +15,9 @@
 //! too, and [`RegularSpectrum::to_xyz`] is the Riemann sum
 //! `W/M · Σ valueᵢ · c̄ᵢ`, where `c̄ᵢ` are the matching functions bucketed
 //! the same way, computed once per `M` at compile time in both precisions
-//! and summed by the one weighted sum of every kind of wavelengths (the
-//! buckets as [`FixedWavelengths<M, T>`]: [`Bucketing::wavelengths`]).
+//! and summed as the fixed kinds of wavelengths are, from the weights'
+//! three columns (the buckets as [`FixedWavelengths<M, T>`]:
+//! [`Bucketing::wavelengths`]).
 //! `M = 0` does not compile.
 //!
 //! On a smooth light both rules converge fast. On F11 center sampling hits or
@@ -63,8 +64,7 @@ pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
     /// The buckets' weights, computed at compile time: one row
     /// `[W/M·x̄ᵢ, W/M·ȳᵢ, W/M·z̄ᵢ, 0]` per bucket, with `c̄ᵢ` the matching
     /// functions bucketed by this rule (the width folded in, so that XYZ is
-    /// `Σᵢ rowᵢ·valueᵢ`, the one weighted sum of every kind of
-    /// wavelengths).
+    /// `Σᵢ rowᵢ·valueᵢ`; `to_xyz` sums the same weights as columns).
     const ROWS_F64: &'static [[f64; 4]; M] = &rows::<M>(Self::RULE);
     /// The same, rounded to `f32`.
     const ROWS_F32: &'static [[f32; 4]; M] = &crate::spectrum::float::rounded(Self::ROWS_F64);

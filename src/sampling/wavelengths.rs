@@ -15,13 +15,15 @@
 //! `[w_X, w_Y, w_Z, w₀]` (`w₀ = 1/(K·pdf)` for drawn wavelengths, 0 for
 //! fixed ones). A spectrum sampled at them is a
 //! [`SampledSpectrum<K, T>`], and the colour of values `v` is one weighted
-//! sum, written once for every count and both kinds (and for
-//! `RegularSpectrum`'s buckets):
+//! sum for every count and both kinds (and for `RegularSpectrum`'s
+//! buckets):
 //!
 //! `XYZ = Σⱼ rowⱼ·vⱼ`,
 //!
-//! one fused multiply-add per wavelength into a four-lane register whose
-//! lanes are X, Y, Z (see `spectrum::simd`). The values are `Copy` and
+//! for drawn wavelengths one fused multiply-add per wavelength into a
+//! four-lane register whose lanes are X, Y, Z; for fixed ones, which keep
+//! their weights as three columns too, three multiply-adds per four
+//! wavelengths (see `spectrum::simd`). The values are `Copy` and
 //! small (K = 4 in `f32`: 16 bytes of wavelengths, 8 of whole
 //! nanometres, 64 of weights); nothing here allocates.
 //!
@@ -172,8 +174,8 @@ macro_rules! weighted_wavelengths {
             }
 
             /// The XYZ of a spectrum with values `v` at these wavelengths:
-            /// `Σⱼ rowⱼ·vⱼ`, summed in `T` (one multiply-add per
-            /// wavelength, four lanes wide), returned in `f64` so that a
+            /// `Σⱼ rowⱼ·vⱼ`, summed in `T` (four lanes wide: rows for
+            /// drawn wavelengths, columns for fixed ones), returned in `f64` so that a
             /// pixel's sum of many estimates keeps its precision. The
             /// assignment's convention, spectrum·nm;
             /// [`Xyz::normalized`](crate::Xyz::normalized) gives a

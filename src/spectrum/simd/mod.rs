@@ -11,7 +11,15 @@
 //!   fused multiply-add per wavelength into a vector whose lanes are the
 //!   channels: the XYZ of a sample with no horizontal sums. Four
 //!   interleaved accumulators for counts of eight and more, so that the
-//!   additions do not wait on each other.
+//!   additions do not wait on each other. Drawn wavelengths sum this way.
+//! - [`column_sums`]: the same sums from the weights as three columns
+//!   (`w_X`, `w_Y`, `w_Z` of every wavelength), three multiply-adds per
+//!   four wavelengths and one horizontal sum per channel: half the work of
+//!   the rows at M = 16. Fixed wavelengths and `RegularSpectrum` sum this
+//!   way.
+//! - [`slices`]: the exact reference's sums over a run-time count of
+//!   samples, in AVX2 where the processor has it (`x86.rs`, chosen at run
+//!   time).
 //!
 //! Where the build enables FMA (`-C target-cpu=native` on a processor
 //! that has it) a multiply-add is fused, and otherwise a multiply and an

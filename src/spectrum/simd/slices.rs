@@ -45,9 +45,9 @@ impl Sums {
         Sums::Portable
     }
 
-    /// `Σᵢ wᵢ·yᵢ` per channel over the samples that have weights, and
-    /// the smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
-    /// (see [`dot_spread`]).
+    /// `Σᵢ wᵢ·yᵢ` per channel, and the smallest and largest sample and
+    /// the largest |y₀ − 2y₁ + y₂| (see [`dot_spread`]), for samples `y`
+    /// and weight columns of one length, the grid's.
     #[inline(always)]
     pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
         match self {
@@ -72,8 +72,10 @@ pub(crate) struct Spread {
 
 /// In one walk over the samples, four per vector (`wide`'s `f64x4`):
 ///
-/// - `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns, over the samples
-///   that have weights (the rest of a vector one at a time);
+/// - `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns (the samples past
+///   the last whole vector one at a time; columns shorter than `y` leave
+///   its last samples out of the sums and of the windows from multiples
+///   of four, so the caller passes both of the grid's length);
 /// - the smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
 ///   ([`window`]s of six, each vector of the sum the first four of one).
 ///   With every middle segment's margin C, `lo − C·second ≥ 0` and
@@ -168,12 +170,20 @@ mod tests {
     /// Both forms give what a scalar walk gives, for every length from 2
     /// to 40 (whole vectors, tails, with and without the last window) and
     /// samples that put the extremes and the largest second difference
-    /// anywhere: the spread to the bit, the sums within rounding.
+    /// (of either sign) anywhere: the spread to the bit, the sums within
+    /// rounding.
     #[test]
     fn four_lanes_agree_with_one_at_a_time() {
         for n in 2..=40 {
-            for shift in 0..5 {
-                let y: Vec<f64> = (0..n).map(|i| ((i * 7 + shift * 3) % 11) as f64 / 10.0).collect();
+            // Five saw-tooth patterns, then one peak at each position (its
+            // largest |second difference| is a negative one, below the peak;
+            // values exact in binary, so every order of sums is exact).
+            for shift in 0..5 + n {
+                let y: Vec<f64> = if shift < 5 {
+                    (0..n).map(|i| ((i * 7 + shift * 3) % 11) as f64 / 10.0).collect()
+                } else {
+                    (0..n).map(|i| if i == shift - 5 { 0.875 } else { 0.125 }).collect()
+                };
                 let lo = y.iter().copied().fold(f64::INFINITY, f64::min);
                 let hi = y.iter().copied().fold(f64::NEG_INFINITY, f64::max);
                 let second = y.windows(3).map(|w| (w[0] - 2.0 * w[1] + w[2]).abs()).fold(0.0, f64::max);
