@@ -188,8 +188,7 @@ impl<const M: usize, B: Bucketing<M>, T: Float> RegularSpectrum<M, B, T> {
 
     /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`, the bucketed observer times
     /// the width as three columns of weights (the fixed kinds' sum: three
-    /// multiply-adds per four buckets, or per eight `f32` in AVX2), summed
-    /// in `T`.
+    /// four-lane multiply-adds per four buckets), summed in `T`.
     #[inline]
     #[must_use]
     pub fn to_xyz(&self) -> Xyz {

@@ -266,8 +266,8 @@ pub(crate) use weighted_wavelengths;
 ///
 /// Besides the rows, the weights are kept as three columns (`w_X`, `w_Y`,
 /// `w_Z` of every wavelength), which is how their sums are computed: three
-/// multiply-adds per four (AVX2: eight `f32`) wavelengths instead of one
-/// per wavelength, half the work at M = 16.
+/// four-lane multiply-adds per four wavelengths instead of one per
+/// wavelength, half the work at M = 16.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FixedWavelengths<const M: usize, T: Float = f64>(pub(crate) Weighted<M, T>, [[T; M]; 3]);
 

@@ -104,6 +104,42 @@ fn small_overshoots_between_samples_are_caught() {
     }
 }
 
+/// Overshoots inside an end segment (its cubic through the first or last
+/// four samples, `a, a, b, c` from the end), on the 0.5 nm grid, where
+/// each end's screen margin is what stands between them and a skipped
+/// correction (on a 10 nm grid a wrong margin would come out larger).
+#[test]
+fn overshoots_in_the_end_segments_are_caught() {
+    let lights = [Light::A.spectrum(), Light::F11.spectrum()];
+    let step = 0.5;
+    let n = 701;
+    let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
+    for [a, b, c] in
+        [[0.99, 0.8, 0.3], [0.99, 0.85, 0.5], [0.97, 0.6, 0.0], [0.999, 0.95, 0.8], [0.96, 0.5, 0.0]]
+    {
+        for first in [true, false] {
+            let mut values = vec![0.5; n];
+            let (at, end) = if first { (0, [a, a, b, c]) } else { (n - 4, [c, b, a, a]) };
+            values[at..at + 4].copy_from_slice(&end);
+            let s = TabulatedSpectrum::new(lambda.clone(), values.clone(), Role::Reflectance).expect("valid");
+            let segment = if first { lambda[0] } else { lambda[n - 2] };
+            let clamped = (1..20).any(|i| s.eval(segment + step * f64::from(i) / 20.0) == 1.0);
+            assert!(
+                clamped,
+                "{a}, {b}, {c} at the {} end: the cubic overshoots 1",
+                if first { "first" } else { "last" }
+            );
+            for l in lights {
+                let white = reference::white(l).y;
+                let slow = reference::xyz_of_product(&[l, &s]);
+                let prepared = PreparedLight::for_grid(l, &lambda, Interpolation::Cubic).expect("valid grid");
+                let fast = prepared.xyz_samples(&values).expect("in range");
+                assert!(close(fast, slow, white), "{a}, {b}, {c}, first end {first}: {fast:?} vs {slow:?}");
+            }
+        }
+    }
+}
+
 /// A light prepared at run time (a loaded, non-uniform one here) gives the
 /// same as integration, and so does a surface off the light's grid.
 #[test]

@@ -50,6 +50,7 @@ impl Sums {
     /// and weight columns of one length, the grid's.
     #[inline(always)]
     pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
+        debug_assert!(columns.iter().all(|c| c.len() == y.len()), "samples and weights of one grid");
         match self {
             Sums::Portable => dot_spread(columns, y),
             #[cfg(target_arch = "x86_64")]
@@ -176,11 +177,12 @@ mod tests {
     fn four_lanes_agree_with_one_at_a_time() {
         for n in 2..=40 {
             // Five saw-tooth patterns, then one peak at each position (its
-            // largest |second difference| is a negative one, below the peak;
-            // values exact in binary, so every order of sums is exact).
+            // largest |second difference| is a negative one, below the peak).
+            // Sixteenths: exact in binary, so the windows' a − b − b + c and
+            // the scalar a − 2b + c agree to the bit.
             for shift in 0..5 + n {
                 let y: Vec<f64> = if shift < 5 {
-                    (0..n).map(|i| ((i * 7 + shift * 3) % 11) as f64 / 10.0).collect()
+                    (0..n).map(|i| ((i * 7 + shift * 3) % 11) as f64 / 16.0).collect()
                 } else {
                     (0..n).map(|i| if i == shift - 5 { 0.875 } else { 0.125 }).collect()
                 };

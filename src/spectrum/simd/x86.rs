@@ -1,8 +1,8 @@
 //! The exact reference's sums over a reflectance's samples in AVX2 with
 //! fused multiply-adds, chosen at run time on x86-64 processors that have
-//! both (every x86-64 of the last ten years; `wide`, which the portable
-//! forms use, picks its instructions at compile time, so a default build
-//! gets SSE2 from it).
+//! both (most made since 2013, though some low-end ones sold later lack
+//! AVX; `wide`, which the portable forms use, picks its instructions at
+//! compile time, so a default build gets SSE2 from it).
 //!
 //! [`Avx2Fma::detect`] asks the processor once and keeps the answer (a
 //! build with `-C target-feature=+avx2,+fma`, or `target-cpu=native` on
