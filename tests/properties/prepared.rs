@@ -76,6 +76,20 @@ fn clamped_segments_on_a_fine_grid() {
     }
 }
 
+/// Under A and F11, the light prepared for the cubic grid `lambda` gives
+/// for samples `values` what piece-by-piece integration gives.
+fn prepared_equals_integration(lambda: &[f64], values: &[f64], what: &str) {
+    let s = TabulatedSpectrum::new(lambda.to_vec(), values.to_vec(), Role::Reflectance).expect("valid");
+    for light in [Light::A, Light::F11] {
+        let l = light.spectrum();
+        let white = reference::white(l).y;
+        let slow = reference::xyz_of_product(&[l, &s]);
+        let prepared = PreparedLight::for_grid(l, lambda, Interpolation::Cubic).expect("valid grid");
+        let fast = prepared.xyz_samples(values).expect("in range");
+        assert!(close(fast, slow, white), "{what}, {light:?}: {fast:?} vs {slow:?}");
+    }
+}
+
 /// Overshoots that the samples do not show: a plateau of 0.99 between
 /// 0.9s, whose cubic rises just above 1 (clamped: 1.0 exactly at the
 /// plateau's middle), in the middle and at each end of a 10 nm and a
@@ -83,7 +97,6 @@ fn clamped_segments_on_a_fine_grid() {
 /// must not pass these: every one is integrated exactly.
 #[test]
 fn small_overshoots_between_samples_are_caught() {
-    let lights = [Light::A.spectrum(), Light::F11.spectrum()];
     for step in [10.0, 0.5] {
         let n = (350.0 / step) as usize + 1;
         let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
@@ -93,13 +106,7 @@ fn small_overshoots_between_samples_are_caught() {
             let s = TabulatedSpectrum::new(lambda.clone(), values.clone(), Role::Reflectance).expect("valid");
             let middle = lambda[at + 1] + 0.5 * step;
             assert_eq!(s.eval(middle), 1.0, "step {step}, at {at}: the cubic overshoots 1");
-            for l in lights {
-                let white = reference::white(l).y;
-                let slow = reference::xyz_of_product(&[l, &s]);
-                let prepared = PreparedLight::for_grid(l, &lambda, Interpolation::Cubic).expect("valid grid");
-                let fast = prepared.xyz_samples(&values).expect("in range");
-                assert!(close(fast, slow, white), "step {step}, at {at}: {fast:?} vs {slow:?}");
-            }
+            prepared_equals_integration(&lambda, &values, &format!("step {step}, at {at}"));
         }
     }
 }
@@ -110,7 +117,6 @@ fn small_overshoots_between_samples_are_caught() {
 /// correction (on a 10 nm grid a wrong margin would come out larger).
 #[test]
 fn overshoots_in_the_end_segments_are_caught() {
-    let lights = [Light::A.spectrum(), Light::F11.spectrum()];
     let step = 0.5;
     let n = 701;
     let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
@@ -129,13 +135,7 @@ fn overshoots_in_the_end_segments_are_caught() {
                 "{a}, {b}, {c} at the {} end: the cubic overshoots 1",
                 if first { "first" } else { "last" }
             );
-            for l in lights {
-                let white = reference::white(l).y;
-                let slow = reference::xyz_of_product(&[l, &s]);
-                let prepared = PreparedLight::for_grid(l, &lambda, Interpolation::Cubic).expect("valid grid");
-                let fast = prepared.xyz_samples(&values).expect("in range");
-                assert!(close(fast, slow, white), "{a}, {b}, {c}, first end {first}: {fast:?} vs {slow:?}");
-            }
+            prepared_equals_integration(&lambda, &values, &format!("{a}, {b}, {c}, first end {first}"));
         }
     }
 }
