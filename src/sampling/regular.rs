@@ -53,7 +53,7 @@ use crate::color::Xyz;
 use crate::sampling::buckets::{BucketRule, box_means, center};
 use crate::sampling::wavelengths::{FixedWavelengths, Weighted};
 use crate::spectrum::pointwise::pointwise_spectrum;
-use crate::spectrum::simd::{column_sums, columns, rounded_columns};
+use crate::spectrum::simd::{column_sums, columns};
 use crate::spectrum::{Float, LAMBDA_WIDTH, Spectrum};
 
 /// A bucket rule as a type, so that values bucketed by different rules
@@ -89,7 +89,7 @@ struct Columns<const M: usize, B>(PhantomData<B>);
 
 impl<const M: usize, B: Bucketing<M>> Columns<M, B> {
     const F64: &'static [[f64; M]; 3] = &columns(B::ROWS_F64);
-    const F32: &'static [[f32; M]; 3] = &rounded_columns(Self::F64);
+    const F32: &'static [[f32; M]; 3] = &columns(B::ROWS_F32);
 }
 
 /// Point samples at bucket centers ([`BucketRule::Center`]).

@@ -72,7 +72,7 @@
 
 use crate::color::Xyz;
 use crate::spectrum::lookup::nearest_nm;
-use crate::spectrum::simd::{column_sums, weighted_sum};
+use crate::spectrum::simd::{column_sums, columns, weighted_sum};
 use crate::spectrum::{Float, SampledSpectrum};
 
 /// What both kinds hold: K wavelengths, their nearest whole nanometres,
@@ -276,8 +276,7 @@ weighted_wavelengths!(FixedWavelengths);
 impl<const M: usize, T: Float> FixedWavelengths<M, T> {
     /// Wavelengths with fixed weights (`w₀` = 0), their columns made.
     pub(crate) fn from_weighted(w: Weighted<M, T>) -> Self {
-        let columns = std::array::from_fn(|c| w.rows.map(|row| row[c]));
-        FixedWavelengths(w, columns)
+        FixedWavelengths(w, columns(&w.rows))
     }
 
     /// `[X, Y, Z, 0]` of values `v`, from the columns.

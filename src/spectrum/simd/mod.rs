@@ -116,27 +116,15 @@ pub(crate) fn column_sums<T: Float, const M: usize>(columns: &[[T; M]; 3], v: &[
     })
 }
 
-/// Weight rows `[w_X, w_Y, w_Z, _]` as three columns, at compile time.
-pub(crate) const fn columns<const M: usize>(rows: &[[f64; 4]; M]) -> [[f64; M]; 3] {
-    let mut out = [[0.0; M]; 3];
+/// Weight rows `[w_X, w_Y, w_Z, _]` as three columns (at compile time for
+/// the buckets' tables, at run time for a rule's wavelengths).
+pub(crate) const fn columns<T: Float, const M: usize>(rows: &[[T; 4]; M]) -> [[T; M]; 3] {
+    let mut out = [[T::ZERO; M]; 3];
     let mut j = 0;
     while j < M {
         out[0][j] = rows[j][0];
         out[1][j] = rows[j][1];
         out[2][j] = rows[j][2];
-        j += 1;
-    }
-    out
-}
-
-/// Columns rounded to `f32`, at compile time.
-pub(crate) const fn rounded_columns<const M: usize>(columns: &[[f64; M]; 3]) -> [[f32; M]; 3] {
-    let mut out = [[0.0; M]; 3];
-    let mut j = 0;
-    while j < M {
-        out[0][j] = columns[0][j] as f32;
-        out[1][j] = columns[1][j] as f32;
-        out[2][j] = columns[2][j] as f32;
         j += 1;
     }
     out
@@ -169,7 +157,7 @@ mod tests {
             let columns = super::columns(&rows);
             let (sums, sums32) = (
                 column_sums(&columns, &b),
-                column_sums(&super::rounded_columns(&columns), &b.map(|v| v as f32)),
+                column_sums(&super::columns(&rows.map(|r| r.map(|w| w as f32))), &b.map(|v| v as f32)),
             );
             for c in 0..3 {
                 let scalar: f64 = (0..N).map(|j| rows[j][c] * b[j]).sum();
