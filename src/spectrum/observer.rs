@@ -24,6 +24,7 @@ use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::Wavelengths;
 use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+use wide::{CmpGe, f64x4};
 
 /// `∫ ȳ dλ` over 380–730 nm, in nm: the Y of a spectrum that is 1
 /// everywhere (the 5 nm table of Appendix 1, interpolated by the clamped
@@ -71,6 +72,32 @@ const fn rows() -> [[f64; 12]; SEGMENTS] {
     out
 }
 
+/// The same coefficients with the channels across the lanes: per segment,
+/// the vectors `[xᵢ, yᵢ, zᵢ, eᵢ]` for i = 0..3, where `e = [1, 0, 0, 0]` is
+/// the constant 1. Horner's rule on these four vectors evaluates x̄, ȳ, z̄
+/// and 1 at once, in the order of the scalar rule (the same bits), and
+/// gives the row `[x̄, ȳ, z̄, 1]` a drawn sample scales by its weight. 80
+/// segments of 128 bytes, each two cache lines.
+static LANES: Lanes = Lanes(lanes());
+
+#[repr(C, align(64))]
+struct Lanes([[f64x4; 4]; SEGMENTS]);
+
+const fn lanes() -> [[f64x4; 4]; SEGMENTS] {
+    let mut out = [[f64x4::ZERO; 4]; SEGMENTS];
+    let mut k = 0;
+    while k < SEGMENTS {
+        let mut i = 0;
+        while i < 4 {
+            out[k][i] =
+                f64x4::new([ROWS[k][i], ROWS[k][4 + i], ROWS[k][8 + i], if i == 0 { 1.0 } else { 0.0 }]);
+            i += 1;
+        }
+        k += 1;
+    }
+    out
+}
+
 /// Colour matching functions x̄, ȳ, z̄ at K wavelengths at once: the exact
 /// interpolated CIE 1931 observer, [`Cie1931`], or a dense table
 /// (`DenseObserver`). A hero sample takes its weights from one when it is
@@ -91,16 +118,20 @@ pub struct Cie1931;
 
 impl Observer for Cie1931 {
     /// Evaluated in `f64` at each wavelength (one segment lookup for all
-    /// three, scalar Horner: on baseline x86-64 the three side by side in
-    /// one `f64x4` measured slower, 22 ns against 13 per wavelength) and
-    /// rounded to `T`.
+    /// three) and rounded to `T`: for four wavelengths or more, Horner's
+    /// rule on `[x̄, ȳ, z̄, 1]` side by side in one `f64x4`, from
+    /// coefficients stored in that layout; for fewer, the scalar rule (one
+    /// wavelength is one chain of dependent steps, shorter in scalar code).
+    /// The same bits either way.
     #[inline(always)]
     fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
         let lambda = at.lambda();
-        std::array::from_fn(|j| {
-            let [x, y, z] = xyz_bar(lambda[j].to_f64());
-            [T::from_f64(x), T::from_f64(y), T::from_f64(z), T::ONE]
-        })
+        let mut rows = [[T::ZERO; 4]; K];
+        for (row, l) in rows.iter_mut().zip(lambda) {
+            let l = l.to_f64();
+            *row = if K < 4 { lone_row(l) } else { xyz_bar_row(l) }.map(T::from_f64);
+        }
+        rows
     }
 }
 
@@ -123,6 +154,30 @@ pub fn xyz_bar(lambda: f64) -> [f64; 3] {
     // FIRST ≤ λ ≤ LAST in one comparison (NaN compares false).
     let inside = (lambda - FIRST) * (LAST - lambda) >= 0.0;
     if inside { [at(0), at(4), at(8)] } else { [0.0; 3] }
+}
+
+/// [`xyz_bar`] with a fourth column of 1 (which a sample replaces by its
+/// weight).
+#[inline(always)]
+fn lone_row(lambda: f64) -> [f64; 4] {
+    let [x, y, z] = xyz_bar(lambda);
+    [x, y, z, 1.0]
+}
+
+/// `[x̄, ȳ, z̄, 1]` at `lambda` nm inside 380–780 nm, zero outside (and for
+/// NaN): four Horner steps on the lanes of [`LANES`], clamped at zero, and
+/// no branch. (The fourth lane's coefficients are `[1, 0, 0, 0]`.)
+#[inline(always)]
+pub(crate) fn xyz_bar_row(lambda: f64) -> [f64; 4] {
+    const FIRST: f64 = CIE_Y_LAMBDA[0];
+    const LAST: f64 = CIE_Y_LAMBDA[SEGMENTS];
+    let (c, knot) = LOOKUP.row(&LANES.0, &CIE_Y_LAMBDA, lambda);
+    let t = f64x4::splat(lambda - knot);
+    let [c0, c1, c2, c3] = c;
+    let p = (c0 + t * (c1 + t * (c2 + t * c3))).fast_max(f64x4::ZERO);
+    // FIRST ≤ λ ≤ LAST in one comparison (NaN compares false), as a mask.
+    let inside = f64x4::splat((lambda - FIRST) * (LAST - lambda)).cmp_ge(f64x4::ZERO);
+    (p & inside).to_array()
 }
 
 /// [`xyz_bar`] as a `const fn` (the same values, found by the table's
@@ -161,6 +216,20 @@ mod tests {
             let lambda = 380.0 + i as f64 * 0.05;
             let (a, b) = (xyz_bar_const(lambda), xyz_bar(lambda));
             assert!(a.iter().zip(b).all(|(a, b)| (a - b).abs() <= 1e-15), "at {lambda}: {a:?} {b:?}");
+        }
+    }
+
+    /// The row is `[x̄, ȳ, z̄, 1]` inside the table (the fourth lane exactly
+    /// 1, whatever the segment) and all zero outside it and for NaN.
+    #[test]
+    fn the_row_carries_a_one_inside_and_nothing_outside() {
+        for i in 0..=8000 {
+            let lambda = 380.0 + i as f64 * 0.05;
+            let [x, y, z, one] = xyz_bar_row(lambda);
+            assert_eq!(([x, y, z], one), (xyz_bar(lambda), 1.0), "at {lambda}");
+        }
+        for outside in [379.99, 780.01, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            assert_eq!(xyz_bar_row(outside).map(f64::to_bits), [0; 4], "at {outside}");
         }
     }
 

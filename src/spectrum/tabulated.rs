@@ -184,72 +184,6 @@ impl TabulatedSpectrum {
         }
     }
 
-    /// The value at `lambda` nm: the clamped interpolant inside the support,
-    /// zero outside it and for NaN.
-    ///
-    /// On an equidistant table (every built-in spectrum) the segment is one
-    /// multiplication away: no search, no call, no branch. Other tables take
-    /// a binary search, out of the way of the common case. Either way the
-    /// value is the reference interpolant's: the same segment polynomial at
-    /// the same `t = λ − λₖ`.
-    #[inline(always)]
-    #[must_use]
-    pub fn eval(&self, lambda: f64) -> f64 {
-        self.eval_lanes(&[lambda])[0]
-    }
-
-    /// The spectrum's values at K wavelengths (a hero sample's, a fixed
-    /// rule's, or a `[T; K]`), evaluated side by side in `f64` (the exact
-    /// interpolant at each wavelength) and rounded to `T`.
-    #[inline(always)]
-    #[must_use]
-    pub fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {
-        let at = at.lambda();
-        let values: [f64; K] = self.eval_lanes(&std::array::from_fn(|j| at[j].to_f64()));
-        SampledSpectrum::new(std::array::from_fn(|j| T::from_f64(values[j])))
-    }
-
-    /// [`TabulatedSpectrum::eval`] at K wavelengths at once.
-    #[inline(always)]
-    pub(crate) fn eval_lanes<const K: usize>(&self, lambda: &[f64; K]) -> [f64; K] {
-        let mut v = [0.0; K];
-        self.eval_into(lambda, &mut v);
-        v
-    }
-
-    /// [`TabulatedSpectrum::eval`] at each of `lambda`, side by side, into
-    /// `values` (as many as the shorter has).
-    #[inline(always)]
-    fn eval_into(&self, lambda: &[f64], values: &mut [f64]) {
-        let Some(lookup) = self.lookup else {
-            return self.eval_by_search(lambda, values);
-        };
-        let (coeffs, knots) = (&*self.coeffs, &*self.lambda);
-        let ([first, last], [lo, hi]) = (self.ends, self.bounds);
-        let linear = self.interpolation == Interpolation::Linear;
-        for (v, &l) in values.iter_mut().zip(lambda) {
-            let (c, knot) = lookup.row(coeffs, knots, l);
-            let t = l - knot;
-            // A linear segment's c2 and c3 are 0: the same value, sooner.
-            let p = if linear { c[0] + t * c[1] } else { interp::segment_value(c, t) };
-            let p = if p > lo { p } else { lo };
-            let p = if p < hi { p } else { hi };
-            // first ≤ λ ≤ last in one comparison (each difference has an
-            // exact sign; NaN compares false).
-            *v = if (l - first) * (last - l) >= 0.0 { p } else { 0.0 };
-        }
-    }
-
-    /// [`TabulatedSpectrum::eval_into`] for a table that is not
-    /// equidistant: a binary search per wavelength.
-    #[cold]
-    #[inline(never)]
-    fn eval_by_search(&self, lambda: &[f64], values: &mut [f64]) {
-        for (v, &l) in values.iter_mut().zip(lambda) {
-            *v = interp::eval(&self.lambda, &self.coeffs, self.bounds, l);
-        }
-    }
-
     /// The spectrum times `factor` (finite and positive, and keeping every
     /// value within [`validate::MAX_VALUE`]; otherwise an error).
     pub fn scaled(&self, factor: f64) -> Result<Self, Error> {
@@ -414,6 +348,9 @@ impl Spectrum for TabulatedSpectrum {
         best.clamp(self.bounds[0], self.bounds[1])
     }
 }
+
+#[path = "tabulated_eval.rs"]
+mod eval;
 
 #[cfg(test)]
 #[path = "tabulated_tests.rs"]

@@ -67,3 +67,25 @@ fn cumulative_is_the_exact_integral() {
         }
     }
 }
+
+/// Four lanes at once give the bits of one lane at a time, on linear,
+/// cubic and clamped tables, inside and outside the support, at the knots
+/// and for the values that are not numbers.
+#[test]
+fn four_lanes_are_one_lane_four_times() {
+    let mut rng = StdRng::seed_from_u64(31);
+    let odd = [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 379.999, 380.0, 730.0, 780.0, 1e300];
+    for s in [&A, &F11, &E2, &G4, &X_BAR, &Z_BAR] {
+        let lookup = s.lookup.expect("equidistant");
+        for i in 0..20_000 {
+            let lambda: [f64; 4] = std::array::from_fn(|j| match (i + j) % 9 {
+                8 => odd[(i / 9 + j) % odd.len()],
+                7 => 380.0 + 5.0 * ((i + 3 * j) % 81) as f64,
+                _ => 360.0 + 440.0 * rng.random::<f64>(),
+            });
+            let four = s.eval4(lookup, &lambda).map(f64::to_bits);
+            let one = lambda.map(|l| s.eval_at(lookup, l).to_bits());
+            assert_eq!(four, one, "{lambda:?}");
+        }
+    }
+}

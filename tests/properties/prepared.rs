@@ -140,6 +140,26 @@ fn overshoots_in_the_end_segments_are_caught() {
     }
 }
 
+/// Zigzags whose second differences exceed 1 (`lo, hi, lo` with hi − lo
+/// above ½) around a plateau `hi, hi` whose cubic rises above 1, with
+/// every sample well inside [0, 1]: the screen's margin grows with the
+/// second difference, so none of these may skip the exact correction.
+#[test]
+fn zigzags_with_large_second_differences_are_caught() {
+    let step = 10.0;
+    let n = 36;
+    let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
+    for i in 0..10 {
+        let lo = 0.05 + 0.005 * f64::from(i);
+        let hi = 1.0 - lo;
+        let mut values = vec![0.5; n];
+        values[14..22].copy_from_slice(&[lo, hi, lo, hi, hi, lo, hi, lo]);
+        let s = TabulatedSpectrum::new(lambda.clone(), values.clone(), Role::Reflectance).expect("valid");
+        assert_eq!(s.eval(lambda[17] + 0.5 * step), 1.0, "lo {lo}: the plateau's cubic overshoots 1");
+        prepared_equals_integration(&lambda, &values, &format!("zigzag, lo {lo}"));
+    }
+}
+
 /// A light prepared at run time (a loaded, non-uniform one here) gives the
 /// same as integration, and so does a surface off the light's grid.
 #[test]

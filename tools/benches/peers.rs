@@ -291,10 +291,11 @@ fn print_table(rows: &[Row], runs: &[Vec<f64>]) {
 /// The static tables the hot paths read, in bytes.
 fn print_sizes(light: &TabulatedSpectrum, surface: &TabulatedSpectrum) {
     let spectrum = |s: &TabulatedSpectrum| s.lambda().len() * 8 + (s.lambda().len() - 1) * 32;
-    let observer = 80 * 96 + 81 * 8;
+    // Four vectors [x, y, z, 1] of four f64 per 5 nm segment, and the knots.
+    let observer = 80 * 128 + 81 * 8;
     let weights = 36 * 24 + 35 * 96 + 35 * 64 + 36 * 8;
     println!(
-        "\nhot tables: observer rows {observer} B; F11 {} B; H4 {} B; one light's reference weights {weights} B",
+        "\nhot tables: observer coefficients {observer} B; F11 {} B; H4 {} B; one light's reference weights {weights} B",
         spectrum(light),
         spectrum(surface)
     );
