@@ -164,9 +164,11 @@ fn lone_row(lambda: f64) -> [f64; 4] {
     [x, y, z, 1.0]
 }
 
-/// `[x̄, ȳ, z̄, 1]` at `lambda` nm inside 380–780 nm, zero outside (and for
-/// NaN): four Horner steps on the lanes of [`LANES`], clamped at zero, and
-/// no branch. (The fourth lane's coefficients are `[1, 0, 0, 0]`.)
+/// `[x̄, ȳ, z̄, 1]` at `lambda` nm, x̄, ȳ, z̄ zero outside 380–780 nm (and
+/// for NaN): four Horner steps on the lanes of [`LANES`] (the fourth
+/// lane's coefficients are `[1, 0, 0, 0]`), clamped at zero as the scalar
+/// rule clamps (`p > 0 ? p : 0`, what SSE, AVX and NEON's maximum does;
+/// the support's mask discards whatever a NaN gave), and no branch.
 #[inline(always)]
 pub(crate) fn xyz_bar_row(lambda: f64) -> [f64; 4] {
     const FIRST: f64 = CIE_Y_LAMBDA[0];
@@ -175,9 +177,10 @@ pub(crate) fn xyz_bar_row(lambda: f64) -> [f64; 4] {
     let t = f64x4::splat(lambda - knot);
     let [c0, c1, c2, c3] = c;
     let p = (c0 + t * (c1 + t * (c2 + t * c3))).fast_max(f64x4::ZERO);
-    // FIRST ≤ λ ≤ LAST in one comparison (NaN compares false), as a mask.
+    // FIRST ≤ λ ≤ LAST in one comparison (NaN compares false), as a mask;
+    // the fourth lane is 1 either way, as the scalar rule's.
     let inside = f64x4::splat((lambda - FIRST) * (LAST - lambda)).cmp_ge(f64x4::ZERO);
-    (p & inside).to_array()
+    ((p & inside) | f64x4::new([0.0, 0.0, 0.0, 1.0])).to_array()
 }
 
 /// [`xyz_bar`] as a `const fn` (the same values, found by the table's
@@ -219,17 +222,24 @@ mod tests {
         }
     }
 
-    /// The row is `[x̄, ȳ, z̄, 1]` inside the table (the fourth lane exactly
-    /// 1, whatever the segment) and all zero outside it and for NaN.
+    /// The row is `[x̄, ȳ, z̄, 1]`: the scalar rule's x̄, ȳ, z̄ bit for bit
+    /// inside the table (the fourth lane exactly 1, whatever the segment),
+    /// `[0, 0, 0, 1]` outside it and for NaN, for draws of one wavelength
+    /// and of four alike.
     #[test]
     fn the_row_carries_a_one_inside_and_nothing_outside() {
         for i in 0..=8000 {
             let lambda = 380.0 + i as f64 * 0.05;
-            let [x, y, z, one] = xyz_bar_row(lambda);
-            assert_eq!(([x, y, z], one), (xyz_bar(lambda), 1.0), "at {lambda}");
+            let row = xyz_bar_row(lambda).map(f64::to_bits);
+            assert_eq!(row, lone_row(lambda).map(f64::to_bits), "at {lambda}");
+            assert_eq!(f64::from_bits(row[3]), 1.0, "at {lambda}");
         }
+        let none = [0.0, 0.0, 0.0, 1.0].map(f64::to_bits);
         for outside in [379.99, 780.01, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
-            assert_eq!(xyz_bar_row(outside).map(f64::to_bits), [0; 4], "at {outside}");
+            assert_eq!(xyz_bar_row(outside).map(f64::to_bits), none, "at {outside}");
+            assert_eq!(lone_row(outside).map(f64::to_bits), none, "at {outside}");
+            let four = Cie1931.xyz_bar_at(&[outside; 4]).map(|r| r.map(f64::to_bits));
+            assert_eq!(four, [none; 4], "at {outside}");
         }
     }
 

@@ -7,8 +7,11 @@
 //! (`UniformLookup::row`); the four lanes' coefficients are gathered into
 //! four `f64x4` vectors, and Horner's rule, the role's clamp and the
 //! support (zero outside it, and for NaN) act on the four lanes at once,
-//! without a branch. The operations and their order are those of the
-//! reference interpolant, `interp::eval`: the same bits. One wavelength,
+//! without a branch. The operations and their order are those of one
+//! lane at a time: the same bits (and the reference interpolant's value,
+//! `interp::eval`, to rounding: it finds the segment by a search). The
+//! clamp is `p > lo ? p : lo`, what SSE, AVX and NEON's maximum does. One
+//! wavelength,
 //! and the last few of a count that is not a multiple of four, take the
 //! scalar rule (one lane is one chain of dependent steps, shorter in
 //! scalar code). Tables that are not equidistant take a binary search per

@@ -89,3 +89,23 @@ fn four_lanes_are_one_lane_four_times() {
         }
     }
 }
+
+/// Many wavelengths at once (`eval_many`) give each wavelength's own value,
+/// bit for bit, for every count up to 13 (whole vectors of four and the
+/// one-lane tail), and fill only as many values as the shorter slice has.
+#[test]
+fn many_at_once_are_each_alone() {
+    let lambda: Vec<f64> = (0..13).map(|i| 372.5 + 31.0 * f64::from(i)).collect();
+    for s in [&F11, &G4, &Y_BAR] {
+        for n in 0..=lambda.len() {
+            let mut values = vec![-1.0; n + 2];
+            s.eval_many(&lambda[..n], &mut values);
+            let alone: Vec<u64> = lambda[..n].iter().map(|&l| s.eval(l).to_bits()).collect();
+            assert_eq!(values[..n].iter().map(|v| v.to_bits()).collect::<Vec<_>>(), alone, "{n}");
+            assert_eq!(values[n..], [-1.0, -1.0], "{n}: only {n} values written");
+            let mut short = vec![-1.0; n / 2];
+            s.eval_many(&lambda[..n], &mut short);
+            assert_eq!(short.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), alone[..n / 2], "{n}");
+        }
+    }
+}
