@@ -17,7 +17,7 @@ fn close(fast: Xyz, slow: Xyz, scale: f64) -> bool {
 }
 
 fn grid() -> Vec<f64> {
-    (0..36).map(|i| 380.0 + 10.0 * f64::from(i)).collect()
+    grid_every(10.0)
 }
 
 fn reflectance(values: Vec<f64>) -> TabulatedSpectrum {
@@ -90,6 +90,21 @@ fn prepared_equals_integration(lambda: &[f64], values: &[f64], what: &str) {
     }
 }
 
+/// 380–730 nm every `step` nm.
+fn grid_every(step: f64) -> Vec<f64> {
+    let n = (350.0 / step) as usize + 1;
+    (0..n).map(|i| 380.0 + step * i as f64).collect()
+}
+
+/// A reflectance of 0.5 on `lambda` with `pattern` from sample `at`: its
+/// samples and the spectrum.
+fn grey_with(lambda: &[f64], at: usize, pattern: &[f64]) -> (Vec<f64>, TabulatedSpectrum) {
+    let mut values = vec![0.5; lambda.len()];
+    values[at..at + pattern.len()].copy_from_slice(pattern);
+    let s = TabulatedSpectrum::new(lambda.to_vec(), values.clone(), Role::Reflectance).expect("valid");
+    (values, s)
+}
+
 /// Overshoots that the samples do not show: a plateau of 0.99 between
 /// 0.9s, whose cubic rises just above 1 (clamped: 1.0 exactly at the
 /// plateau's middle), in the middle and at each end of a 10 nm and a
@@ -98,12 +113,10 @@ fn prepared_equals_integration(lambda: &[f64], values: &[f64], what: &str) {
 #[test]
 fn small_overshoots_between_samples_are_caught() {
     for step in [10.0, 0.5] {
-        let n = (350.0 / step) as usize + 1;
-        let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
+        let lambda = grid_every(step);
+        let n = lambda.len();
         for at in [0, n / 2, n - 4] {
-            let mut values = vec![0.5; n];
-            values[at..at + 4].copy_from_slice(&[0.9, 0.99, 0.99, 0.9]);
-            let s = TabulatedSpectrum::new(lambda.clone(), values.clone(), Role::Reflectance).expect("valid");
+            let (values, s) = grey_with(&lambda, at, &[0.9, 0.99, 0.99, 0.9]);
             let middle = lambda[at + 1] + 0.5 * step;
             assert_eq!(s.eval(middle), 1.0, "step {step}, at {at}: the cubic overshoots 1");
             prepared_equals_integration(&lambda, &values, &format!("step {step}, at {at}"));
@@ -118,16 +131,14 @@ fn small_overshoots_between_samples_are_caught() {
 #[test]
 fn overshoots_in_the_end_segments_are_caught() {
     let step = 0.5;
-    let n = 701;
-    let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
+    let lambda = grid_every(step);
+    let n = lambda.len();
     for [a, b, c] in
         [[0.99, 0.8, 0.3], [0.99, 0.85, 0.5], [0.97, 0.6, 0.0], [0.999, 0.95, 0.8], [0.96, 0.5, 0.0]]
     {
         for first in [true, false] {
-            let mut values = vec![0.5; n];
             let (at, end) = if first { (0, [a, a, b, c]) } else { (n - 4, [c, b, a, a]) };
-            values[at..at + 4].copy_from_slice(&end);
-            let s = TabulatedSpectrum::new(lambda.clone(), values.clone(), Role::Reflectance).expect("valid");
+            let (values, s) = grey_with(&lambda, at, &end);
             let segment = if first { lambda[0] } else { lambda[n - 2] };
             let clamped = (1..20).any(|i| s.eval(segment + step * f64::from(i) / 20.0) == 1.0);
             assert!(
@@ -147,14 +158,11 @@ fn overshoots_in_the_end_segments_are_caught() {
 #[test]
 fn zigzags_with_large_second_differences_are_caught() {
     let step = 10.0;
-    let n = 36;
-    let lambda: Vec<f64> = (0..n).map(|i| 380.0 + step * i as f64).collect();
+    let lambda = grid_every(step);
     for i in 0..10 {
         let lo = 0.05 + 0.005 * f64::from(i);
         let hi = 1.0 - lo;
-        let mut values = vec![0.5; n];
-        values[14..22].copy_from_slice(&[lo, hi, lo, hi, hi, lo, hi, lo]);
-        let s = TabulatedSpectrum::new(lambda.clone(), values.clone(), Role::Reflectance).expect("valid");
+        let (values, s) = grey_with(&lambda, 14, &[lo, hi, lo, hi, hi, lo, hi, lo]);
         assert_eq!(s.eval(lambda[17] + 0.5 * step), 1.0, "lo {lo}: the plateau's cubic overshoots 1");
         prepared_equals_integration(&lambda, &values, &format!("zigzag, lo {lo}"));
     }
