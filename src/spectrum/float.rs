@@ -105,6 +105,17 @@ pub(crate) mod sealed {
         fn array(v: Self::V4) -> [Self; 4];
         /// One value in all four lanes.
         fn splat(v: Self) -> Self::V4;
+        /// Each of three vectors' lanes summed as `(a₀ + a₂) + (a₁ + a₃)`.
+        #[inline(always)]
+        fn sums3(v: [Self::V4; 3]) -> [Self; 3]
+        where
+            Self: std::ops::Add<Output = Self> + Copy,
+        {
+            v.map(|a| {
+                let [a0, a1, a2, a3] = Self::array(a);
+                (a0 + a2) + (a1 + a3)
+            })
+        }
 
         /// Wavelengths and the values to fill at them, in this precision (how
         /// a spectrum reaches its `f32` or `f64` evaluation).
@@ -190,6 +201,15 @@ impl sealed::Sealed for f32 {
     #[inline(always)]
     fn splat(v: f32) -> wide::f32x4 {
         wide::f32x4::splat(v)
+    }
+    /// Transposed, the three sums are one vector's lanes: three vector
+    /// additions instead of nine scalar ones and their extractions, in
+    /// the same order (the same bits).
+    #[inline(always)]
+    fn sums3([x, y, z]: [wide::f32x4; 3]) -> [f32; 3] {
+        let [t0, t1, t2, t3] = wide::f32x4::transpose([x, y, z, wide::f32x4::ZERO]);
+        let [sx, sy, sz, _] = ((t0 + t2) + (t1 + t3)).to_array();
+        [sx, sy, sz]
     }
     #[inline(always)]
     fn lanes<'a>(lambda: &'a [f32], values: &'a mut [f32]) -> sealed::Lanes<'a> {
