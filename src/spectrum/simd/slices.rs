@@ -1,5 +1,5 @@
 //! The exact reference's sums over a reflectance's samples (a count known
-//! at run time), in one walk: [`Sums::dot_spread`], three columns of
+//! at run time), in one call: [`Sums::dot_spread`], three columns of
 //! weights against the samples, and the smallest and largest sample and
 //! the largest second difference (what proves that no cubic segment
 //! leaves [0, 1]). [`PreparedLight::batch`](crate::sampling::PreparedLight::batch)
@@ -71,14 +71,15 @@ pub(crate) struct Spread {
     pub(crate) second: f64,
 }
 
-/// In one walk over the samples, four per vector (`wide`'s `f64x4`):
+/// In two passes over the samples, four per vector (`wide`'s `f64x4`):
 ///
 /// - `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns (the samples past
 ///   the last whole vector one at a time; columns shorter than `y` leave
-///   its last samples out of the sums and of the windows from multiples
-///   of four, so the caller passes both of the grid's length);
-/// - the smallest and largest sample and the largest |y₀ − 2y₁ + y₂|
-///   ([`window`]s of six, each vector of the sum the first four of one).
+///   its last samples out of the sums, so the caller passes both of the
+///   grid's length);
+/// - the smallest and largest sample (over the sum's vectors, in the
+///   same pass, and the last four samples) and, in a second pass, the
+///   largest |y₀ − 2y₁ + y₂| (over windows of six, [`for_each_window`]).
 ///   With every middle segment's margin C, `lo − C·second ≥ 0` and
 ///   `hi + C·second ≤ 1` clear them all: a segment's inner Bernstein
 ///   coefficients lie within C·second of its linear interpolation, itself
@@ -90,49 +91,50 @@ pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Sprea
     let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
     let mut acc = [f64x4::ZERO; 3];
     let first = f64x4::splat(y.first().copied().unwrap_or(0.0));
-    let mut spread = [first, first, f64x4::ZERO];
-    let widen = |[lo, hi, second]: [f64x4; 3], six: &[f64; 6]| {
-        let [a, b, c] = shifted(six).map(f64x4::new);
-        [lo.fast_min(a).fast_min(c), hi.fast_max(a).fast_max(c), second.fast_max((a - b - b + c).abs())]
-    };
+    let (mut lo, mut hi, mut second) = (first, first, f64x4::ZERO);
     for (k, yk) in y4.iter().enumerate() {
         let a = f64x4::new(*yk);
         for c in 0..3 {
             acc[c] = f64x4::new(w[c].0[k]).mul_add(a, acc[c]);
         }
-        if let Some(six) = window(y, 4 * k) {
-            spread = widen(spread, six);
-        }
+        (lo, hi) = (lo.fast_min(a), hi.fast_max(a));
     }
-    if let Some(six) = last_window(y) {
-        spread = widen(spread, six);
+    if let Some(last) = y.last_chunk::<4>() {
+        let a = f64x4::new(*last);
+        (lo, hi) = (lo.fast_min(a), hi.fast_max(a));
     }
+    for_each_window(y, |six| {
+        let [a, b, c] = shifted(six).map(f64x4::new);
+        second = second.fast_max((a - b - b + c).abs());
+    });
     let mut sum = acc.map(f64x4::reduce_add);
     for (i, &y) in y_rest.iter().enumerate() {
         for c in 0..3 {
             sum[c] += w[c].1[i] * y;
         }
     }
-    (sum, finish_spread(y, spread.map(f64x4::to_array)))
+    (sum, finish_spread(y, [lo, hi, second].map(f64x4::to_array)))
 }
 
-/// Six samples from `y[i]`: the windows from 0, 4, 8, … while there are
-/// six, and where those leave some out, [`last_window`]. Together their
-/// first and last four samples are every sample, and their second
-/// differences (from the first, second and third four) every second
-/// difference. None where there are fewer than six samples.
+/// `f` on windows of six samples whose second differences (from their
+/// first, second and third four) are every second difference of `y`:
+/// from 0, 4, 8, … as long as the window lies within two vectors of four
+/// (no bounds to test per window), then from n − 7 and n − 6, which
+/// overlap them (the largest second difference does not mind seeing one
+/// twice). None where there are fewer than six samples.
 #[inline(always)]
-pub(crate) fn window(y: &[f64], i: usize) -> Option<&[f64; 6]> {
-    y.get(i..)?.first_chunk::<6>()
-}
-
-/// The window from n − 6, where the windows from multiples of four stop
-/// short of the end (it overlaps the last of them: the smallest, largest
-/// and largest second difference do not mind seeing a sample twice).
-#[inline(always)]
-pub(crate) fn last_window(y: &[f64]) -> Option<&[f64; 6]> {
-    let i = y.len().checked_sub(6).filter(|i| i % 4 != 0)?;
-    window(y, i)
+pub(crate) fn for_each_window(y: &[f64], mut f: impl FnMut(&[f64; 6])) {
+    let (y4, _) = y.as_chunks::<4>();
+    for two in y4.windows(2) {
+        if let Some(six) = two.as_flattened().first_chunk::<6>() {
+            f(six);
+        }
+    }
+    for back in [7, 6] {
+        if let Some(six) = y.len().checked_sub(back).and_then(|i| y[i..].first_chunk::<6>()) {
+            f(six);
+        }
+    }
 }
 
 /// Six samples as three runs of four, from the first, second and third.
@@ -142,8 +144,8 @@ pub(crate) fn shifted(six: &[f64; 6]) -> [[f64; 4]; 3] {
 }
 
 /// The spread from the lanes of its vectors (`[lo, hi, second]`, four of
-/// each, from [`window`]s), and where there were no windows (fewer than
-/// six samples) from the samples one at a time.
+/// each), and where there were no windows (fewer than six samples)
+/// from the samples one at a time.
 #[inline(always)]
 pub(crate) fn finish_spread(y: &[f64], [lo, hi, second]: [[f64; 4]; 3]) -> Spread {
     let n = y.len();

@@ -41,7 +41,7 @@ use std::arch::x86_64::{
 };
 use std::sync::atomic::{AtomicU8, Ordering};
 
-use super::slices::{Spread, finish_spread, last_window, window};
+use super::slices::{Spread, finish_spread, for_each_window};
 
 /// Proof that this processor has AVX2 and FMA (see [`Avx2Fma::detect`]).
 #[derive(Clone, Copy, Debug)]
@@ -89,7 +89,8 @@ fn ask() -> bool {
 /// The portable `dot_spread` with one register per vector of four and
 /// fused multiply-adds: two accumulators per channel (even and odd
 /// vectors), named so that they stay in registers; the same minimum,
-/// maximum and absolute value, so the same bits for the spread.
+/// maximum and absolute value in the same order, so the same bits for the
+/// spread.
 #[target_feature(enable = "avx2,fma")]
 fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
@@ -97,7 +98,7 @@ fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
     let (mut even, mut odd) = ([_mm256_setzero_pd(); 3], [_mm256_setzero_pd(); 3]);
     let first = _mm256_set1_pd(y.first().copied().unwrap_or(0.0));
-    let mut spread = [first, first, _mm256_setzero_pd()];
+    let (mut lo, mut hi, mut second) = (first, first, _mm256_setzero_pd());
     let (pairs, last) = y4.as_chunks::<2>();
     for (p, [a, b]) in pairs.iter().enumerate() {
         let (k, a, b) = (2 * p, load(a), load(b));
@@ -105,17 +106,30 @@ fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
             even[c] = _mm256_fmadd_pd(load(&w[c].0[k]), a, even[c]);
             odd[c] = _mm256_fmadd_pd(load(&w[c].0[k + 1]), b, odd[c]);
         }
-        spread = widen(spread, window(y, 4 * k));
-        spread = widen(spread, window(y, 4 * k + 4));
+        lo = _mm256_min_pd(_mm256_min_pd(lo, a), b);
+        hi = _mm256_max_pd(_mm256_max_pd(hi, a), b);
     }
     if let [a] = last {
         let (k, a) = (y4.len() - 1, load(a));
         for c in 0..3 {
             even[c] = _mm256_fmadd_pd(load(&w[c].0[k]), a, even[c]);
         }
-        spread = widen(spread, window(y, 4 * k));
+        (lo, hi) = (_mm256_min_pd(lo, a), _mm256_max_pd(hi, a));
     }
-    spread = widen(spread, last_window(y));
+    if let Some(a) = y.last_chunk::<4>() {
+        let a = load(a);
+        (lo, hi) = (_mm256_min_pd(lo, a), _mm256_max_pd(hi, a));
+    }
+    let abs = _mm256_set1_pd(-0.0);
+    for_each_window(y, |six| {
+        let [a, b, c] = [0, 1, 2].map(|from| {
+            // SAFETY: four readable f64 from `six[from]`, `from + 4 ≤ 6`; an
+            // unaligned load.
+            unsafe { _mm256_loadu_pd(six[from..].as_ptr()) }
+        });
+        let d = _mm256_add_pd(_mm256_sub_pd(_mm256_sub_pd(a, b), b), c);
+        second = _mm256_max_pd(second, _mm256_andnot_pd(abs, d));
+    });
     let mut sum = [0.0; 3];
     for c in 0..3 {
         sum[c] = lane_sum(_mm256_add_pd(even[c], odd[c]));
@@ -123,28 +137,7 @@ fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
             sum[c] = w[c].1[i].mul_add(y, sum[c]);
         }
     }
-    let [lo, hi, second] = spread;
     (sum, finish_spread(y, [to_array(lo), to_array(hi), to_array(second)]))
-}
-
-/// `[lo, hi, second]` widened by a window of six samples, if there is one.
-#[inline]
-#[target_feature(enable = "avx2,fma")]
-fn widen([lo, hi, second]: [__m256d; 3], six: Option<&[f64; 6]>) -> [__m256d; 3] {
-    let Some(six) = six else {
-        return [lo, hi, second];
-    };
-    let [a, b, c] = [0, 1, 2].map(|from| {
-        // SAFETY: four readable f64 from `six[from]`, `from + 4 ≤ 6`; an
-        // unaligned load.
-        unsafe { _mm256_loadu_pd(six[from..].as_ptr()) }
-    });
-    let d = _mm256_add_pd(_mm256_sub_pd(_mm256_sub_pd(a, b), b), c);
-    [
-        _mm256_min_pd(_mm256_min_pd(lo, a), c),
-        _mm256_max_pd(_mm256_max_pd(hi, a), c),
-        _mm256_max_pd(second, _mm256_andnot_pd(_mm256_set1_pd(-0.0), d)),
-    ]
 }
 
 /// Four `f64` in a register.
