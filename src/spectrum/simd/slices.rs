@@ -75,8 +75,8 @@ pub(crate) struct Spread {
 ///
 /// - `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns (the samples past
 ///   the last whole vector one at a time; columns shorter than `y` leave
-///   its last samples out of the sums, so the caller passes both of the
-///   grid's length);
+///   its last samples out of the sums and the spread alike, so the caller
+///   passes both of the grid's length);
 /// - the smallest and largest sample (over the sum's vectors, in the
 ///   same pass, and the last four samples) and, in a second pass, the
 ///   largest |y₀ − 2y₁ + y₂| (over windows of six, [`for_each_window`]).
@@ -87,7 +87,8 @@ pub(crate) struct Spread {
 #[inline(always)]
 pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
-    let (y4, y_rest) = y[..n].as_chunks::<4>();
+    let y = &y[..n];
+    let (y4, y_rest) = y.as_chunks::<4>();
     let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
     let mut acc = [f64x4::ZERO; 3];
     let first = f64x4::splat(y.first().copied().unwrap_or(0.0));
@@ -119,9 +120,10 @@ pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Sprea
 /// `f` on windows of six samples whose second differences (from their
 /// first, second and third four) are every second difference of `y`:
 /// from 0, 4, 8, … as long as the window lies within two vectors of four
-/// (no bounds to test per window), then from n − 7 and n − 6, which
-/// overlap them (the largest second difference does not mind seeing one
-/// twice). None where there are fewer than six samples.
+/// (no bounds to test per window; they cover the second differences
+/// that start at 0 to 4⌊n/4⌋ − 5), then from n − 6 and, where n leaves 3
+/// over four, from n − 7, which overlap them (the largest second difference does not
+/// mind seeing one twice). Nothing for fewer than six samples.
 #[inline(always)]
 pub(crate) fn for_each_window(y: &[f64], mut f: impl FnMut(&[f64; 6])) {
     let (y4, _) = y.as_chunks::<4>();
@@ -130,10 +132,15 @@ pub(crate) fn for_each_window(y: &[f64], mut f: impl FnMut(&[f64; 6])) {
             f(six);
         }
     }
-    for back in [7, 6] {
-        if let Some(six) = y.len().checked_sub(back).and_then(|i| y[i..].first_chunk::<6>()) {
-            f(six);
-        }
+    let n = y.len();
+    let from = |back: usize| n.checked_sub(back).and_then(|i| y[i..].first_chunk::<6>());
+    if n % 4 == 3
+        && let Some(six) = from(7)
+    {
+        f(six);
+    }
+    if let Some(six) = from(6) {
+        f(six);
     }
 }
 
@@ -170,14 +177,14 @@ pub(crate) fn finish_spread(y: &[f64], [lo, hi, second]: [[f64; 4]; 3]) -> Sprea
 mod tests {
     use super::{Spread, Sums, dot_spread};
 
-    /// Both forms give what a scalar walk gives, for every length from 2
-    /// to 40 (whole vectors, tails, with and without the last window) and
+    /// Both forms give what a scalar walk gives, for every length from 1
+    /// to 40 (whole vectors, tails, every remainder over four) and
     /// samples that put the extremes and the largest second difference
     /// (of either sign) anywhere: the spread to the bit, the sums within
     /// rounding.
     #[test]
     fn four_lanes_agree_with_one_at_a_time() {
-        for n in 2..=40 {
+        for n in 1..=40 {
             // Five saw-tooth patterns, then one peak at each position (its
             // largest |second difference| is a negative one, below the peak).
             // Sixteenths: exact in binary, so the windows' a − b − b + c and

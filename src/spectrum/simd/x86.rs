@@ -94,7 +94,8 @@ fn ask() -> bool {
 #[target_feature(enable = "avx2,fma")]
 fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
-    let (y4, y_rest) = y[..n].as_chunks::<4>();
+    let y = &y[..n];
+    let (y4, y_rest) = y.as_chunks::<4>();
     let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
     let (mut even, mut odd) = ([_mm256_setzero_pd(); 3], [_mm256_setzero_pd(); 3]);
     let first = _mm256_set1_pd(y.first().copied().unwrap_or(0.0));
@@ -120,7 +121,7 @@ fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
         let a = load(a);
         (lo, hi) = (_mm256_min_pd(lo, a), _mm256_max_pd(hi, a));
     }
-    let abs = _mm256_set1_pd(-0.0);
+    let sign = _mm256_set1_pd(-0.0);
     for_each_window(y, |six| {
         let [a, b, c] = [0, 1, 2].map(|from| {
             // SAFETY: four readable f64 from `six[from]`, `from + 4 ≤ 6`; an
@@ -128,7 +129,7 @@ fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
             unsafe { _mm256_loadu_pd(six[from..].as_ptr()) }
         });
         let d = _mm256_add_pd(_mm256_sub_pd(_mm256_sub_pd(a, b), b), c);
-        second = _mm256_max_pd(second, _mm256_andnot_pd(abs, d));
+        second = _mm256_max_pd(second, _mm256_andnot_pd(sign, d));
     });
     let mut sum = [0.0; 3];
     for c in 0..3 {
