@@ -148,8 +148,7 @@ impl<L: Spectrum> PreparedLight<L> {
         let middle = scale.map(|s| s * self.weights.middle_margin());
         let w = self.weights.columns();
         let sums = Sums::detect();
-        for (i, (y, o)) in r.chunks_exact(n).zip(out.iter_mut()).enumerate() {
-            let (mut sum, Spread { lo, hi, second }) = sums.dot_spread(w, y);
+        sums.each(w, r, n, |i, y, mut sum, Spread { lo, hi, second }| {
             let clear = match (scale, middle) {
                 (Some(scale), Some(middle)) => {
                     let ends = end_clear(y, 0, 0, margins[0] * scale)
@@ -167,9 +166,11 @@ impl<L: Spectrum> PreparedLight<L> {
                     self.correct_overshoots(&mut sum, y, &mut scratch);
                 }
             }
-            *o = Xyz::from(sum);
-        }
-        Ok(())
+            if let Some(o) = out.get_mut(i) {
+                *o = Xyz::from(sum);
+            }
+            Ok(())
+        })
     }
 
     /// Replaces the weighted term of every segment of `y` whose cubic the

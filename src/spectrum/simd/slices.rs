@@ -1,9 +1,10 @@
-//! The exact reference's sums over a reflectance's samples (a count known
-//! at run time), in one call: [`Sums::dot_spread`], three columns of
-//! weights against the samples, and the smallest and largest sample and
-//! the largest second difference (what proves that no cubic segment
-//! leaves [0, 1]). [`PreparedLight::batch`](crate::sampling::PreparedLight::batch)
-//! calls it once per reflectance.
+//! The exact reference's sums over a batch of reflectances' samples (a
+//! count known at run time): [`Sums::each`], for each reflectance three
+//! columns of weights against its samples, and the smallest and largest
+//! sample and the largest second difference (what proves that no cubic
+//! segment leaves [0, 1]), handed to the caller's closure.
+//! [`PreparedLight::batch`](crate::sampling::PreparedLight::batch) runs
+//! its checks there.
 //!
 //! Two forms, chosen once per batch by [`Sums::detect`]: four samples per
 //! `wide::f64x4` (two SSE2 registers on a default x86-64 build), and on
@@ -45,16 +46,31 @@ impl Sums {
         Sums::Portable
     }
 
-    /// `Σᵢ wᵢ·yᵢ` per channel, and the smallest and largest sample and
-    /// the largest |y₀ − 2y₁ + y₂| (see [`dot_spread`]), for samples `y`
-    /// and weight columns of one length, the grid's.
+    /// For each run `y` of `n` samples of `r` (the `i`th reflectance),
+    /// `Σᵢ wᵢ·yᵢ` per channel and the smallest and largest sample and the
+    /// largest |y₀ − 2y₁ + y₂| (see [`dot_spread`]), handed to
+    /// `f(i, y, sums, spread)`; stops at `f`'s first error. The weight
+    /// columns are `n` long, the grid's. The whole loop runs in the chosen
+    /// form, so that the sums are inlined into it and `f` with them.
     #[inline(always)]
-    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
-        debug_assert!(columns.iter().all(|c| c.len() == y.len()), "samples and weights of one grid");
+    pub(crate) fn each<E>(
+        self,
+        columns: &[Vec<f64>; 3],
+        r: &[f64],
+        n: usize,
+        mut f: impl FnMut(usize, &[f64], [f64; 3], Spread) -> Result<(), E>,
+    ) -> Result<(), E> {
+        debug_assert!(columns.iter().all(|c| c.len() == n), "samples and weights of one grid");
         match self {
-            Sums::Portable => dot_spread(columns, y),
+            Sums::Portable => {
+                for (i, y) in r.chunks_exact(n.max(1)).enumerate() {
+                    let (sums, spread) = dot_spread(columns, y);
+                    f(i, y, sums, spread)?;
+                }
+                Ok(())
+            }
             #[cfg(target_arch = "x86_64")]
-            Sums::Avx2(avx2) => avx2.dot_spread(columns, y),
+            Sums::Avx2(avx2) => avx2.each(columns, r, n, f),
         }
     }
 }
@@ -202,7 +218,15 @@ mod tests {
                     std::array::from_fn(|c| (0..n).map(|i| 1.0 + (i * (c + 2)) as f64).collect());
                 let by_hand: [f64; 3] =
                     std::array::from_fn(|c| columns[c].iter().zip(&y).map(|(w, v)| w * v).sum());
-                for (sums, spread) in [dot_spread(&columns, &y), Sums::detect().dot_spread(&columns, &y)] {
+                let mut detected = None;
+                let each = Sums::detect().each(&columns, &y, n, |i, run, sums, spread| {
+                    detected = Some((i, run.len(), sums, spread));
+                    Ok::<(), ()>(())
+                });
+                assert_eq!(each, Ok(()));
+                let Some((0, len, sums, spread)) = detected else { panic!("one run, the 0th") };
+                assert_eq!(len, n);
+                for (sums, spread) in [dot_spread(&columns, &y), (sums, spread)] {
                     assert_eq!(spread, Spread { lo, hi, second }, "n = {n}, shift {shift}");
                     for c in 0..3 {
                         assert!((sums[c] - by_hand[c]).abs() <= 1e-12 * by_hand[c].abs().max(1.0), "n = {n}");

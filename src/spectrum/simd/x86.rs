@@ -10,9 +10,10 @@
 //! needs: only `detect` makes one, so a kernel cannot run where the
 //! instructions are missing.
 //!
-//! [`Avx2Fma::dot_spread`] is [`super::slices`]'s walk, four `f64` per
-//! instruction. They are worth a call: a batch reads its
-//! samples from memory written long before. The per-sample sums of a few
+//! [`Avx2Fma::each`] is [`super::slices`]'s loop over a batch, four `f64`
+//! per instruction, the caller's closure compiled into it. A batch is
+//! worth a call: it reads its samples from memory written long before,
+//! and the call is made once. The per-sample sums of a few
 //! values (`RegularSpectrum`, fixed wavelengths) stay in `wide`'s portable
 //! form: there a call per sum measured slower (17 ns against 6 for
 //! `RegularSpectrum<16>`'s multiply and sum, because a 32-byte load of
@@ -69,12 +70,31 @@ impl Avx2Fma {
         yes.then_some(Avx2Fma(()))
     }
 
-    /// See [`super::slices::Sums::dot_spread`].
+    /// See [`super::slices::Sums::each`].
     #[inline]
-    pub(crate) fn dot_spread(self, columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
+    pub(crate) fn each<E, F>(self, columns: &[Vec<f64>; 3], r: &[f64], n: usize, f: F) -> Result<(), E>
+    where
+        F: FnMut(usize, &[f64], [f64; 3], Spread) -> Result<(), E>,
+    {
         // SAFETY: `self` exists only where the processor has AVX2 and FMA.
-        unsafe { dot_spread(columns, y) }
+        unsafe { each(columns, r, n, f) }
     }
+}
+
+/// [`dot_spread`] on each run of `n` samples of `r`, and `f` on what it
+/// gives: the loop compiled for AVX2 and FMA too, so that both are
+/// inlined into it (one call per reflectance measured 12 % more
+/// instructions).
+#[target_feature(enable = "avx2,fma")]
+fn each<E, F>(columns: &[Vec<f64>; 3], r: &[f64], n: usize, mut f: F) -> Result<(), E>
+where
+    F: FnMut(usize, &[f64], [f64; 3], Spread) -> Result<(), E>,
+{
+    for (i, y) in r.chunks_exact(n.max(1)).enumerate() {
+        let (sums, spread) = dot_spread(columns, y);
+        f(i, y, sums, spread)?;
+    }
+    Ok(())
 }
 
 /// Asks the processor, once, and keeps the answer.
@@ -91,6 +111,7 @@ fn ask() -> bool {
 /// vectors), named so that they stay in registers; the same minimum,
 /// maximum and absolute value in the same order, so the same bits for the
 /// spread.
+#[inline]
 #[target_feature(enable = "avx2,fma")]
 fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
