@@ -235,4 +235,35 @@ mod tests {
             }
         }
     }
+
+    /// Both forms hand every run to the closure in order, with its index
+    /// and its own samples, and stop at the closure's first error.
+    #[test]
+    fn each_walks_every_run_and_stops_at_the_first_error() {
+        let n = 7;
+        let columns: [Vec<f64>; 3] = std::array::from_fn(|c| (0..n).map(|i| (i + c) as f64).collect());
+        let r: Vec<f64> = (0..3 * n).map(|i| (i % 5) as f64 / 8.0).collect();
+        for sums in [Sums::Portable, Sums::detect()] {
+            let mut seen = Vec::new();
+            let all = sums.each(&columns, &r, n, |i, y, got, _| {
+                assert_eq!(y, &r[i * n..(i + 1) * n], "run {i}");
+                seen.push((i, got));
+                Ok::<(), usize>(())
+            });
+            assert_eq!(all, Ok(()));
+            let want: Vec<_> = (0..3).map(|i| (i, dot_spread(&columns, &r[i * n..(i + 1) * n]).0)).collect();
+            assert_eq!(seen.iter().map(|s| s.0).collect::<Vec<_>>(), [0, 1, 2]);
+            for ((_, got), (_, want)) in seen.iter().zip(&want) {
+                for c in 0..3 {
+                    assert!((got[c] - want[c]).abs() <= 1e-12 * want[c].abs().max(1.0));
+                }
+            }
+            let mut calls = 0;
+            let stopped = sums.each(&columns, &r, n, |i, _, _, _| {
+                calls += 1;
+                if i == 1 { Err(i) } else { Ok(()) }
+            });
+            assert_eq!((stopped, calls), (Err(1), 2));
+        }
+    }
 }

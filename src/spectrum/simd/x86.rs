@@ -1,7 +1,7 @@
-//! The exact reference's sums over a reflectance's samples in AVX2 with
-//! fused multiply-adds, chosen at run time on x86-64 processors that have
-//! both (most made since 2013, though some low-end ones sold later lack
-//! AVX; `wide`, which the portable forms use, picks its instructions at
+//! The exact reference's sums over a batch of reflectances' samples in
+//! AVX2 with fused multiply-adds, chosen at run time on x86-64 processors
+//! that have both (most made since 2013, though some low-end ones sold
+//! later lack AVX; `wide`, which the portable forms use, picks its instructions at
 //! compile time, so a default build gets SSE2 from it).
 //!
 //! [`Avx2Fma::detect`] asks the processor once and keeps the answer (a
