@@ -58,21 +58,33 @@ impl Sums {
         columns: &[Vec<f64>; 3],
         r: &[f64],
         n: usize,
-        mut f: impl FnMut(usize, &[f64], [f64; 3], Spread) -> Result<(), E>,
+        f: impl FnMut(usize, &[f64], [f64; 3], Spread) -> Result<(), E>,
     ) -> Result<(), E> {
         debug_assert!(columns.iter().all(|c| c.len() == n), "samples and weights of one grid");
         match self {
-            Sums::Portable => {
-                for (i, y) in r.chunks_exact(n.max(1)).enumerate() {
-                    let (sums, spread) = dot_spread(columns, y);
-                    f(i, y, sums, spread)?;
-                }
-                Ok(())
-            }
+            Sums::Portable => each_run(r, n, |y| dot_spread(columns, y), f),
             #[cfg(target_arch = "x86_64")]
             Sums::Avx2(avx2) => avx2.each(columns, r, n, f),
         }
     }
+}
+
+/// `f(i, y, sums, spread)` for each run `y` of `n` samples of `r`, with
+/// `walk(y)`'s sums and spread, stopping at `f`'s first error: the loop of
+/// both forms (inlined into the AVX2 one, so that its walk and `f` are
+/// compiled with it).
+#[inline(always)]
+pub(crate) fn each_run<E>(
+    r: &[f64],
+    n: usize,
+    walk: impl Fn(&[f64]) -> ([f64; 3], Spread),
+    mut f: impl FnMut(usize, &[f64], [f64; 3], Spread) -> Result<(), E>,
+) -> Result<(), E> {
+    for (i, y) in r.chunks_exact(n.max(1)).enumerate() {
+        let (sums, spread) = walk(y);
+        f(i, y, sums, spread)?;
+    }
+    Ok(())
 }
 
 /// A reflectance's smallest and largest sample and largest second
@@ -138,8 +150,9 @@ pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Sprea
 /// from 0, 4, 8, … as long as the window lies within two vectors of four
 /// (no bounds to test per window; they cover the second differences
 /// that start at 0 to 4⌊n/4⌋ − 5), then from n − 6 and, where n leaves 3
-/// over four, from n − 7, which overlap them (the largest second difference does not
-/// mind seeing one twice). Nothing for fewer than six samples.
+/// over four, from n − 7, which overlap them (the largest second
+/// difference does not mind seeing one twice). Nothing for fewer than six
+/// samples.
 #[inline(always)]
 pub(crate) fn for_each_window(y: &[f64], mut f: impl FnMut(&[f64; 6])) {
     let (y4, _) = y.as_chunks::<4>();

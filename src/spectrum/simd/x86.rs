@@ -1,8 +1,8 @@
 //! The exact reference's sums over a batch of reflectances' samples in
 //! AVX2 with fused multiply-adds, chosen at run time on x86-64 processors
 //! that have both (most made since 2013, though some low-end ones sold
-//! later lack AVX; `wide`, which the portable forms use, picks its instructions at
-//! compile time, so a default build gets SSE2 from it).
+//! later lack AVX; `wide`, which the portable forms use, picks its
+//! instructions at compile time, so a default build gets SSE2 from it).
 //!
 //! [`Avx2Fma::detect`] asks the processor once and keeps the answer (a
 //! build with `-C target-feature=+avx2,+fma`, or `target-cpu=native` on
@@ -42,7 +42,7 @@ use std::arch::x86_64::{
 };
 use std::sync::atomic::{AtomicU8, Ordering};
 
-use super::slices::{Spread, finish_spread, for_each_window};
+use super::slices::{Spread, each_run, finish_spread, for_each_window};
 
 /// Proof that this processor has AVX2 and FMA (see [`Avx2Fma::detect`]).
 #[derive(Clone, Copy, Debug)]
@@ -86,15 +86,11 @@ impl Avx2Fma {
 /// inlined into it (one call per reflectance measured 12 % more
 /// instructions).
 #[target_feature(enable = "avx2,fma")]
-fn each<E, F>(columns: &[Vec<f64>; 3], r: &[f64], n: usize, mut f: F) -> Result<(), E>
+fn each<E, F>(columns: &[Vec<f64>; 3], r: &[f64], n: usize, f: F) -> Result<(), E>
 where
     F: FnMut(usize, &[f64], [f64; 3], Spread) -> Result<(), E>,
 {
-    for (i, y) in r.chunks_exact(n.max(1)).enumerate() {
-        let (sums, spread) = dot_spread(columns, y);
-        f(i, y, sums, spread)?;
-    }
-    Ok(())
+    each_run(r, n, |y| dot_spread(columns, y), f)
 }
 
 /// Asks the processor, once, and keeps the answer.
