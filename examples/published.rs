@@ -3,7 +3,9 @@
 //! prefiltering, on every built-in light × the 53 held-apart reflectances
 //! (`data/held-apart/`, in no fitted prior): worst / mean ΔE00 and pairs
 //! above 1, at depth 1 and 2, then each light's worst for the targets of
-//! docs/published-rules.md. The last two columns are reference points,
+//! docs/published-rules.md. `fitted-munsell` is the same fit over measured
+//! Munsell chips (`published::measured`) instead of the generated prior.
+//! The last two columns are reference points,
 //! not methods (they have seen the answers): `oracle`, the rule fitted to
 //! each light over these very 53 reflectances
 //! (`FittedRules::with_surfaces`), and `oracle-minimax`, its wavelengths
@@ -20,12 +22,14 @@ use std::io::{self, Write as _};
 use std::process::ExitCode;
 use std::time::Instant;
 
+use speclab::sampling::fitted::FittedRules;
+use speclab::spectrum::Spectrum;
 use speclab_cli::args::{fail, finish};
 use speclab_study::StudyError;
 use speclab_study::evaluate::scene::{self, Depth, Named};
 use speclab_study::published::compare::{self, Candidate, Row};
 use speclab_study::published::prefilter::Space;
-use speclab_study::published::{held_apart, rules::Family};
+use speclab_study::published::{held_apart, measured, rules::Family};
 
 const USAGE: &str = "\
 usage: published [--depth D]
@@ -69,58 +73,70 @@ fn main() -> ExitCode {
 fn report(depths: &[usize]) -> Result<String, StudyError> {
     let (lights, surfaces) = (scene::every_light(), held_apart::all()?);
     let mut out = String::new();
-    // Writing to a String cannot fail.
-    let w = |out: &mut String, s: String| -> Result<(), StudyError> {
-        let _ = writeln!(out, "{s}");
-        Ok(())
-    };
     fit_times(&lights, &mut out)?;
+    let (chips, prior) = (measured::munsell()?.len(), measured::prior()?.len());
+    // Writing to a String cannot fail.
+    let _ = writeln!(
+        out,
+        "\nfitted-munsell: fitted over {prior} of the {chips} Munsell chips (the {} within {} ΔE00 of a held-apart surface under A or D65 dropped)",
+        chips - prior,
+        measured::NEAR
+    );
     for &d in depths {
         let depth = Depth::new(d)?;
-        w(&mut out, format!("\n## Depth {d}: {} lights × {} reflectances\n", lights.len(), surfaces.len()))?;
-        w(
-            &mut out,
-            "| M | fitted | borges | meyer | wallis | astm (interval) | oracle | oracle-minimax |".into(),
-        )?;
-        w(&mut out, "|---:|---|---|---|---|---|---|---|".into())?;
-        let mut by_m = Vec::new();
-        for m in MS {
-            let mut candidates =
-                vec![Candidate::Fitted(m), Candidate::Oracle(m), Candidate::OracleMinimax(m)];
-            candidates.extend(Family::ALL.map(|f| Candidate::Published(f, m)).into_iter().filter(
-                |c| match c {
-                    Candidate::Published(f, m) => *m >= f.min_m(),
-                    _ => true,
-                },
-            ));
-            let rows = compare::table(&lights, &surfaces, &candidates, depth)?;
-            let cell = |name: &str| {
-                rows.iter().find(|r| r.candidate.to_string() == name).map_or("–".into(), summary)
-            };
-            let astm = rows.iter().find(|r| matches!(r.candidate, Candidate::Published(Family::Astm, _)));
-            let astm = astm.map_or("–".into(), |r| format!("{} ({})", summary(r), r.candidate));
-            w(
-                &mut out,
-                format!(
-                    "| {m} | {} | {} | {} | {} | {astm} | {} | {} |",
-                    cell("fitted"),
-                    cell("borges"),
-                    cell("meyer"),
-                    cell("wallis"),
-                    cell("oracle"),
-                    cell("oracle-minimax")
-                ),
-            )?;
-            by_m.push((m, rows));
-        }
+        let _ = writeln!(out, "\n## Depth {d}: {} lights × {} reflectances\n", lights.len(), surfaces.len());
+        let by_m = by_m(&lights, &surfaces, depth, &mut out)?;
         let pre = compare::table(&lights, &surfaces, &Space::ALL.map(Candidate::Prefiltered), depth)?;
-        w(&mut out, String::new())?;
+        let _ = writeln!(out);
         for r in &pre {
-            w(&mut out, format!("{} (3 numbers per surface): {}", r.candidate, summary(r)))?;
+            let _ = writeln!(out, "{} (3 numbers per surface): {}", r.candidate, summary(r));
         }
         per_light(&lights, &by_m, &mut out);
     }
     Ok(out)
+}
+
+/// Every candidate with wavelengths at every M at `depth`, as one table
+/// (each light's fits over surfaces are built once), written to `out` a
+/// row per M; the rows by M.
+fn by_m(
+    lights: &[Named],
+    surfaces: &[Named],
+    depth: Depth,
+    out: &mut String,
+) -> Result<Vec<(usize, Vec<Row>)>, StudyError> {
+    let mut candidates = Vec::new();
+    for m in MS {
+        candidates.extend([
+            Candidate::Fitted(m),
+            Candidate::Measured(m),
+            Candidate::Oracle(m),
+            Candidate::OracleMinimax(m),
+        ]);
+        candidates
+            .extend(Family::ALL.into_iter().filter(|f| m >= f.min_m()).map(|f| Candidate::Published(f, m)));
+    }
+    let rows = compare::table(lights, surfaces, &candidates, depth)?;
+    let by_m: Vec<(usize, Vec<Row>)> = MS
+        .iter()
+        .map(|&m| (m, rows.iter().filter(|r| r.candidate.m() == Some(m)).cloned().collect()))
+        .collect();
+    let columns =
+        ["fitted", "fitted-munsell", "borges", "meyer", "wallis", "astm", "oracle", "oracle-minimax"];
+    let _ = writeln!(out, "| M | {} |", columns.join(" | ").replace("astm", "astm (interval)"));
+    let _ = writeln!(out, "|---:|{}", "---|".repeat(columns.len()));
+    for (m, rows) in &by_m {
+        let cell = |name: &str| match name {
+            "astm" => rows
+                .iter()
+                .find(|r| matches!(r.candidate, Candidate::Published(Family::Astm, _)))
+                .map_or("–".into(), |r| format!("{} ({})", summary(r), r.candidate)),
+            _ => rows.iter().find(|r| r.candidate.to_string() == name).map_or("–".into(), summary),
+        };
+        let cells: Vec<String> = columns.iter().map(|c| cell(c)).collect();
+        let _ = writeln!(out, "| {m} | {} |", cells.join(" | "));
+    }
+    Ok(by_m)
 }
 
 /// `worst / mean / pairs above 1` (and lights without the rule).
@@ -140,14 +156,18 @@ fn per_light(lights: &[Named], by_m: &[(usize, Vec<Row>)], out: &mut String) {
         by_m.iter().find(|(k, _)| *k == m).and_then(|(_, rows)| rows.iter().find(|r| pick(&r.candidate)))
     };
     let fitted = |m| row(m, &|c| matches!(c, Candidate::Fitted(_)));
+    let munsell = |m| row(m, &|c| matches!(c, Candidate::Measured(_)));
     let oracle = |m| row(m, &|c| matches!(c, Candidate::Oracle(_)));
     let minimax = |m| row(m, &|c| matches!(c, Candidate::OracleMinimax(_)));
     let astm = |m| row(m, &|c| matches!(c, Candidate::Published(Family::Astm, _)));
-    let ways = [(10, 18, "fitted"), (12, 36, "fitted"), (10, 18, "oracle"), (12, 36, "oracle")];
-    let ways = ways.into_iter().chain([(10, 18, "oracle-minimax"), (12, 36, "oracle-minimax")]);
+    let ways =
+        [(10, 18, "fitted"), (12, 36, "fitted"), (10, 18, "fitted-munsell"), (12, 36, "fitted-munsell")];
+    let ways = ways.into_iter().chain([(10, 18, "oracle"), (12, 36, "oracle")]);
+    let ways = ways.chain([(10, 18, "oracle-minimax"), (12, 36, "oracle-minimax")]);
     for (fm, am, rule) in ways {
         let f = match rule {
             "fitted" => fitted(fm),
+            "fitted-munsell" => munsell(fm),
             "oracle" => oracle(fm),
             _ => minimax(fm),
         };
@@ -170,22 +190,36 @@ fn per_light(lights: &[Named], by_m: &[(usize, Vec<Row>)], out: &mut String) {
     }
 }
 
-/// The fit's time per M for one light (D65), first fit in the process
-/// included in the first M.
+/// The fit's time per M for one light (D65), over the generated prior and
+/// over the Munsell chips; the first fit in the process is included in
+/// the first M, building the Munsell problem is timed apart.
 fn fit_times(lights: &[Named], out: &mut String) -> Result<(), StudyError> {
     let d65 = lights.iter().find(|l| l.name == "D65").unwrap_or(&lights[0]);
-    let mut times = Vec::new();
-    let rules = speclab::sampling::fitted::FittedRules::of(&d65.spectrum)?;
-    for m in MS {
-        let start = Instant::now();
-        rules.rule(m)?;
-        times.push(format!("M = {m}: {:.0} ms", start.elapsed().as_secs_f64() * 1e3));
-    }
+    let per_m = |rules: &FittedRules| -> Result<String, StudyError> {
+        let mut times = Vec::new();
+        for m in MS {
+            let start = Instant::now();
+            rules.rule(m)?;
+            times.push(format!("M = {m}: {:.0} ms", start.elapsed().as_secs_f64() * 1e3));
+        }
+        Ok(times.join(", "))
+    };
+    let generated = per_m(&FittedRules::of(&d65.spectrum)?)?;
+    let prior: Vec<&dyn Spectrum> = measured::prior()?.iter().map(|c| &c.spectrum as &dyn Spectrum).collect();
+    let start = Instant::now();
+    let munsell = FittedRules::with_surfaces(&[&d65.spectrum], &prior)?;
+    let built = start.elapsed().as_secs_f64();
+    let munsell = per_m(&munsell)?;
     let _ = writeln!(
         out,
-        "Fit time under {} (one thread; after the prior's moments and the light's normal equations, built once): {}",
-        d65.name,
-        times.join(", ")
+        "Fit time under {} (one thread; after the prior's moments and the light's normal equations, built once): {generated}",
+        d65.name
+    );
+    let _ = writeln!(
+        out,
+        "\nThe same over the Munsell chips ({} surfaces; the problem built in {:.0} ms): {munsell}",
+        prior.len(),
+        built * 1e3
     );
     Ok(())
 }

@@ -29,6 +29,7 @@ use speclab::spectrum::{Spectrum, TabulatedSpectrum};
 use crate::StudyError;
 use crate::evaluate::perceptual;
 use crate::evaluate::scene::{Depth, MAX_DEPTH, Named};
+use crate::published::measured;
 use crate::published::minimax::minimax;
 use crate::published::prefilter::{Prefiltered, Space};
 use crate::published::rules::{Family, astm_interval};
@@ -41,6 +42,10 @@ const MINIMAX_STEPS: usize = 100;
 pub enum Candidate {
     /// speclab's rule of M wavelengths fitted to the light.
     Fitted(usize),
+    /// The same fit over measured surfaces instead of the generated prior:
+    /// the Munsell chips of [`measured::prior`], none of them near a
+    /// held-apart surface.
+    Measured(usize),
     /// The rule of M wavelengths fitted to the light over the very
     /// surfaces it is judged on (`FittedRules::with_surfaces`): a reference
     /// point, not a method (it has seen the answers) and not a lower bound
@@ -57,21 +62,36 @@ pub enum Candidate {
 }
 
 impl Candidate {
-    /// Its colour of light × `surface`^depth, ready for one light; `oracle`
-    /// keeps the light's rules fitted over `surfaces` once built.
-    fn prepare(
-        self,
-        light: &Named,
-        surfaces: &[Named],
-        oracle: &mut Option<FittedRules>,
-    ) -> Result<Prepared, StudyError> {
+    /// Its wavelength count (`None` for prefiltering: three numbers per
+    /// surface, no wavelengths).
+    pub fn m(self) -> Option<usize> {
+        match self {
+            Candidate::Fitted(m)
+            | Candidate::Measured(m)
+            | Candidate::Oracle(m)
+            | Candidate::OracleMinimax(m)
+            | Candidate::Published(_, m) => Some(m),
+            Candidate::Prefiltered(_) => None,
+        }
+    }
+
+    /// Its colour of light × `surface`^depth, ready for one light; `fits`
+    /// keeps the light's rules fitted over surfaces, once built.
+    fn prepare(self, light: &Named, surfaces: &[Named], fits: &mut Fits) -> Result<Prepared, StudyError> {
         Ok(match self {
             Candidate::Fitted(m) => Prepared::Fitted(light.rules()?.rule(m)?.clone()),
+            Candidate::Measured(m) => {
+                let rules = match &fits.measured {
+                    Some(rules) => rules.clone(),
+                    None => fits.measured.insert(over(light, measured::prior()?)?).clone(),
+                };
+                Prepared::Fitted(rules.rule(m)?.clone())
+            }
             Candidate::Oracle(m) | Candidate::OracleMinimax(m) => {
                 let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
-                let rules = match oracle {
+                let rules = match &fits.oracle {
                     Some(rules) => rules.clone(),
-                    None => oracle.insert(FittedRules::with_surfaces(&[&light.spectrum], &own)?).clone(),
+                    None => fits.oracle.insert(over(light, surfaces)?).clone(),
                 };
                 let rule = rules.rule(m)?.clone();
                 match self {
@@ -87,12 +107,27 @@ impl Candidate {
     }
 }
 
+/// One light's rules fitted over surfaces: over the judged ones (the
+/// oracle's) and over the measured prior.
+#[derive(Default)]
+struct Fits {
+    oracle: Option<FittedRules>,
+    measured: Option<FittedRules>,
+}
+
+/// `light`'s rules fitted over `surfaces`.
+fn over(light: &Named, surfaces: &[Named]) -> Result<FittedRules, StudyError> {
+    let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
+    Ok(FittedRules::with_surfaces(&[&light.spectrum], &own)?)
+}
+
 impl fmt::Display for Candidate {
-    /// `fitted`, `oracle`, `oracle-minimax`, `astm` (with its interval: `astm-10nm`), `borges`,
+    /// `fitted`, `fitted-munsell`, `oracle`, `oracle-minimax`, `astm` (with its interval: `astm-10nm`), `borges`,
     /// `meyer`, `wallis`, `prefilter-xyz` / `-srgb` / `-sharp`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Candidate::Fitted(_) => f.write_str("fitted"),
+            Candidate::Measured(_) => f.write_str("fitted-munsell"),
             Candidate::Oracle(_) => f.write_str("oracle"),
             Candidate::OracleMinimax(_) => f.write_str("oracle-minimax"),
             Candidate::Published(Family::Astm, m) => write!(f, "astm-{}nm", astm_interval(*m)),
@@ -160,10 +195,10 @@ pub fn table(
         .map(|light| {
             let white = reference::white(&light.spectrum);
             let exact: Vec<Xyz> = surfaces.iter().map(|s| light.exact_at(depth, &s.spectrum)).collect();
-            let mut oracle = None;
+            let mut fits = Fits::default();
             candidates
                 .iter()
-                .map(|c| match c.prepare(light, surfaces, &mut oracle) {
+                .map(|c| match c.prepare(light, surfaces, &mut fits) {
                     Ok(p) => Ok(Some(
                         surfaces
                             .iter()

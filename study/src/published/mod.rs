@@ -11,6 +11,8 @@
 //!   on a fine grid (Stieltjes, Golub–Welsch), and [`solve`] for the small
 //!   linear systems;
 //! - [`held_apart`]: 53 measured reflectances kept out of every fit;
+//! - [`measured`]: 1,269 measured Munsell chips, less those near a
+//!   held-apart surface, as a prior to fit rules over (`fitted-munsell`);
 //! - [`minimax`]: weights for given wavelengths that lower the worst ΔE00
 //!   over a set of surfaces (Lawson's iteration);
 //! - [`compare`]: worst and mean ΔE00 of each candidate over lights ×
@@ -35,6 +37,7 @@
 pub mod compare;
 pub mod gauss;
 pub mod held_apart;
+pub mod measured;
 pub mod minimax;
 pub mod prefilter;
 pub mod rules;

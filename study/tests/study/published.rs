@@ -322,3 +322,50 @@ fn the_oracle_is_fitted_to_the_surfaces_it_is_judged_on() {
         assert!(rows[2].per_light[i] < rows[0].per_light[i], "{}", light.name);
     }
 }
+
+/// `fitted-munsell` is the rule fitted to each light over the Munsell
+/// prior: each light's worst is that of
+/// `FittedRules::with_surfaces(&[light], measured::prior())` computed by
+/// hand, and it is neither the generated prior's rule nor the oracle's.
+#[test]
+fn fitted_munsell_is_fitted_over_the_munsell_prior() {
+    use speclab::sampling::fitted::FittedRules;
+    use speclab_study::evaluate::perceptual::delta_e00;
+    use speclab_study::published::measured;
+    let lights = [Named::from(Light::F11), Named::from(Light::D65)];
+    let surfaces = scene::builtin_surfaces();
+    let candidates = [Candidate::Measured(6), Candidate::Fitted(6), Candidate::Oracle(6)];
+    let rows = compare::table(&lights, &surfaces, &candidates, Depth::ONE).unwrap();
+    assert_eq!(rows[0].candidate.to_string(), "fitted-munsell");
+    let prior: Vec<&dyn Spectrum> =
+        measured::prior().unwrap().iter().map(|c| &c.spectrum as &dyn Spectrum).collect();
+    for (i, light) in lights.iter().enumerate() {
+        let rules = FittedRules::with_surfaces(&[&light.spectrum], &prior).unwrap();
+        let (rule, white) = (rules.rule(6).unwrap(), reference::white(&light.spectrum));
+        let worst = surfaces
+            .iter()
+            .map(|s| {
+                let got = rule.xyz_of_product(&[&light.spectrum, &s.spectrum]);
+                delta_e00(got, reference::xyz(&light.spectrum, &s.spectrum), white)
+            })
+            .fold(0.0, f64::max);
+        assert!((rows[0].per_light[i] - worst).abs() <= 1e-12, "{}: {}", light.name, rows[0].per_light[i]);
+        assert_ne!(rows[0].per_light[i], rows[1].per_light[i], "{}", light.name);
+        assert_ne!(rows[0].per_light[i], rows[2].per_light[i], "{}", light.name);
+    }
+}
+
+/// Every candidate tells its wavelength count; prefiltering has none.
+#[test]
+fn each_candidate_tells_its_count() {
+    let counts = [
+        Candidate::Fitted(4),
+        Candidate::Measured(5),
+        Candidate::Oracle(6),
+        Candidate::OracleMinimax(7),
+        Candidate::Published(Family::Borges, 8),
+    ]
+    .map(Candidate::m);
+    assert_eq!(counts, [Some(4), Some(5), Some(6), Some(7), Some(8)]);
+    assert_eq!(Candidate::Prefiltered(Space::Sharp).m(), None);
+}
