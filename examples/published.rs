@@ -85,7 +85,7 @@ fn report(depths: &[usize]) -> Result<String, StudyError> {
     for &d in depths {
         let depth = Depth::new(d)?;
         let _ = writeln!(out, "\n## Depth {d}: {} lights × {} reflectances\n", lights.len(), surfaces.len());
-        let by_m = by_m(&lights, &surfaces, depth, &mut out)?;
+        let by_m = table_by_m(&lights, &surfaces, depth, &mut out)?;
         let pre = compare::table(&lights, &surfaces, &Space::ALL.map(Candidate::Prefiltered), depth)?;
         let _ = writeln!(out);
         for r in &pre {
@@ -99,7 +99,7 @@ fn report(depths: &[usize]) -> Result<String, StudyError> {
 /// Every candidate with wavelengths at every M at `depth`, as one table
 /// (each light's fits over surfaces are built once), written to `out` a
 /// row per M; the rows by M.
-fn by_m(
+fn table_by_m(
     lights: &[Named],
     surfaces: &[Named],
     depth: Depth,
@@ -109,7 +109,7 @@ fn by_m(
     for m in MS {
         candidates.extend([
             Candidate::Fitted(m),
-            Candidate::Measured(m),
+            Candidate::FittedMunsell(m),
             Candidate::Oracle(m),
             Candidate::OracleMinimax(m),
         ]);
@@ -121,9 +121,19 @@ fn by_m(
         .iter()
         .map(|&m| (m, rows.iter().filter(|r| r.candidate.m() == Some(m)).cloned().collect()))
         .collect();
-    let columns =
-        ["fitted", "fitted-munsell", "borges", "meyer", "wallis", "astm", "oracle", "oracle-minimax"];
-    let _ = writeln!(out, "| M | {} |", columns.join(" | ").replace("astm", "astm (interval)"));
+    // (column, header): ASTM's cell names its interval.
+    let columns = [
+        ("fitted", "fitted"),
+        ("fitted-munsell", "fitted-munsell"),
+        ("borges", "borges"),
+        ("meyer", "meyer"),
+        ("wallis", "wallis"),
+        ("astm", "astm (interval)"),
+        ("oracle", "oracle"),
+        ("oracle-minimax", "oracle-minimax"),
+    ];
+    let headers: Vec<&str> = columns.iter().map(|c| c.1).collect();
+    let _ = writeln!(out, "| M | {} |", headers.join(" | "));
     let _ = writeln!(out, "|---:|{}", "---|".repeat(columns.len()));
     for (m, rows) in &by_m {
         let cell = |name: &str| match name {
@@ -133,7 +143,7 @@ fn by_m(
                 .map_or("–".into(), |r| format!("{} ({})", summary(r), r.candidate)),
             _ => rows.iter().find(|r| r.candidate.to_string() == name).map_or("–".into(), summary),
         };
-        let cells: Vec<String> = columns.iter().map(|c| cell(c)).collect();
+        let cells: Vec<String> = columns.iter().map(|c| cell(c.0)).collect();
         let _ = writeln!(out, "| {m} | {} |", cells.join(" | "));
     }
     Ok(by_m)
@@ -150,13 +160,14 @@ fn summary(r: &Row) -> String {
 }
 
 /// Light by light: fitted M = 10 against ASTM at 20 nm (M = 18), fitted
-/// M = 12 against ASTM at 10 nm (M = 36); then the oracle's rules the same.
+/// M = 12 against ASTM at 10 nm (M = 36); then `fitted-munsell`'s and the
+/// oracles' rules the same.
 fn per_light(lights: &[Named], by_m: &[(usize, Vec<Row>)], out: &mut String) {
     let row = |m: usize, pick: &dyn Fn(&Candidate) -> bool| {
         by_m.iter().find(|(k, _)| *k == m).and_then(|(_, rows)| rows.iter().find(|r| pick(&r.candidate)))
     };
     let fitted = |m| row(m, &|c| matches!(c, Candidate::Fitted(_)));
-    let munsell = |m| row(m, &|c| matches!(c, Candidate::Measured(_)));
+    let munsell = |m| row(m, &|c| matches!(c, Candidate::FittedMunsell(_)));
     let oracle = |m| row(m, &|c| matches!(c, Candidate::Oracle(_)));
     let minimax = |m| row(m, &|c| matches!(c, Candidate::OracleMinimax(_)));
     let astm = |m| row(m, &|c| matches!(c, Candidate::Published(Family::Astm, _)));

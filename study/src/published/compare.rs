@@ -45,7 +45,7 @@ pub enum Candidate {
     /// The same fit over measured surfaces instead of the generated prior:
     /// the Munsell chips of [`measured::prior`], none of them near a
     /// held-apart surface.
-    Measured(usize),
+    FittedMunsell(usize),
     /// The rule of M wavelengths fitted to the light over the very
     /// surfaces it is judged on (`FittedRules::with_surfaces`): a reference
     /// point, not a method (it has seen the answers) and not a lower bound
@@ -67,7 +67,7 @@ impl Candidate {
     pub fn m(self) -> Option<usize> {
         match self {
             Candidate::Fitted(m)
-            | Candidate::Measured(m)
+            | Candidate::FittedMunsell(m)
             | Candidate::Oracle(m)
             | Candidate::OracleMinimax(m)
             | Candidate::Published(_, m) => Some(m),
@@ -77,10 +77,15 @@ impl Candidate {
 
     /// Its colour of light × `surface`^depth, ready for one light; `fits`
     /// keeps the light's rules fitted over surfaces, once built.
-    fn prepare(self, light: &Named, surfaces: &[Named], fits: &mut Fits) -> Result<Prepared, StudyError> {
+    fn prepare(
+        self,
+        light: &Named,
+        surfaces: &[Named],
+        fits: &mut SurfaceFits,
+    ) -> Result<Prepared, StudyError> {
         Ok(match self {
             Candidate::Fitted(m) => Prepared::Fitted(light.rules()?.rule(m)?.clone()),
-            Candidate::Measured(m) => {
+            Candidate::FittedMunsell(m) => {
                 let rules = match &fits.measured {
                     Some(rules) => rules.clone(),
                     None => fits.measured.insert(over(light, measured::prior()?)?).clone(),
@@ -88,7 +93,6 @@ impl Candidate {
                 Prepared::Fitted(rules.rule(m)?.clone())
             }
             Candidate::Oracle(m) | Candidate::OracleMinimax(m) => {
-                let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
                 let rules = match &fits.oracle {
                     Some(rules) => rules.clone(),
                     None => fits.oracle.insert(over(light, surfaces)?).clone(),
@@ -96,6 +100,8 @@ impl Candidate {
                 let rule = rules.rule(m)?.clone();
                 match self {
                     Candidate::OracleMinimax(_) => {
+                        let own: Vec<&dyn Spectrum> =
+                            surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
                         Prepared::Fitted(minimax(&light.spectrum, &rule, &own, MINIMAX_STEPS)?)
                     }
                     _ => Prepared::Fitted(rule),
@@ -110,7 +116,7 @@ impl Candidate {
 /// One light's rules fitted over surfaces: over the judged ones (the
 /// oracle's) and over the measured prior.
 #[derive(Default)]
-struct Fits {
+struct SurfaceFits {
     oracle: Option<FittedRules>,
     measured: Option<FittedRules>,
 }
@@ -127,7 +133,7 @@ impl fmt::Display for Candidate {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Candidate::Fitted(_) => f.write_str("fitted"),
-            Candidate::Measured(_) => f.write_str("fitted-munsell"),
+            Candidate::FittedMunsell(_) => f.write_str("fitted-munsell"),
             Candidate::Oracle(_) => f.write_str("oracle"),
             Candidate::OracleMinimax(_) => f.write_str("oracle-minimax"),
             Candidate::Published(Family::Astm, m) => write!(f, "astm-{}nm", astm_interval(*m)),
@@ -195,7 +201,7 @@ pub fn table(
         .map(|light| {
             let white = reference::white(&light.spectrum);
             let exact: Vec<Xyz> = surfaces.iter().map(|s| light.exact_at(depth, &s.spectrum)).collect();
-            let mut fits = Fits::default();
+            let mut fits = SurfaceFits::default();
             candidates
                 .iter()
                 .map(|c| match c.prepare(light, surfaces, &mut fits) {

@@ -334,7 +334,7 @@ fn fitted_munsell_is_fitted_over_the_munsell_prior() {
     use speclab_study::published::measured;
     let lights = [Named::from(Light::F11), Named::from(Light::D65)];
     let surfaces = scene::builtin_surfaces();
-    let candidates = [Candidate::Measured(6), Candidate::Fitted(6), Candidate::Oracle(6)];
+    let candidates = [Candidate::FittedMunsell(6), Candidate::Fitted(6), Candidate::Oracle(6)];
     let rows = compare::table(&lights, &surfaces, &candidates, Depth::ONE).unwrap();
     assert_eq!(rows[0].candidate.to_string(), "fitted-munsell");
     let prior: Vec<&dyn Spectrum> =
@@ -360,7 +360,7 @@ fn fitted_munsell_is_fitted_over_the_munsell_prior() {
 fn each_candidate_tells_its_count() {
     let counts = [
         Candidate::Fitted(4),
-        Candidate::Measured(5),
+        Candidate::FittedMunsell(5),
         Candidate::Oracle(6),
         Candidate::OracleMinimax(7),
         Candidate::Published(Family::Borges, 8),
