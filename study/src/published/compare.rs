@@ -88,20 +88,19 @@ impl Candidate {
             Candidate::FittedMunsell(m) => {
                 let rules = match &fits.measured {
                     Some(rules) => rules.clone(),
-                    None => fits.measured.insert(over(light, measured::prior()?)?).clone(),
+                    None => fits.measured.insert(over(light, &as_dyn(measured::prior()?))?).clone(),
                 };
                 Prepared::Fitted(rules.rule(m)?.clone())
             }
             Candidate::Oracle(m) | Candidate::OracleMinimax(m) => {
+                let own = as_dyn(surfaces);
                 let rules = match &fits.oracle {
                     Some(rules) => rules.clone(),
-                    None => fits.oracle.insert(over(light, surfaces)?).clone(),
+                    None => fits.oracle.insert(over(light, &own)?).clone(),
                 };
                 let rule = rules.rule(m)?.clone();
                 match self {
                     Candidate::OracleMinimax(_) => {
-                        let own: Vec<&dyn Spectrum> =
-                            surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
                         Prepared::Fitted(minimax(&light.spectrum, &rule, &own, MINIMAX_STEPS)?)
                     }
                     _ => Prepared::Fitted(rule),
@@ -122,9 +121,13 @@ struct SurfaceFits {
 }
 
 /// `light`'s rules fitted over `surfaces`.
-fn over(light: &Named, surfaces: &[Named]) -> Result<FittedRules, StudyError> {
-    let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
-    Ok(FittedRules::with_surfaces(&[&light.spectrum], &own)?)
+fn over(light: &Named, surfaces: &[&dyn Spectrum]) -> Result<FittedRules, StudyError> {
+    Ok(FittedRules::with_surfaces(&[&light.spectrum], surfaces)?)
+}
+
+/// The named spectra as trait objects.
+fn as_dyn(named: &[Named]) -> Vec<&dyn Spectrum> {
+    named.iter().map(|s| &s.spectrum as &dyn Spectrum).collect()
 }
 
 impl fmt::Display for Candidate {

@@ -325,13 +325,12 @@ fn the_oracle_is_fitted_to_the_surfaces_it_is_judged_on() {
 
 /// `fitted-munsell` is the rule fitted to each light over the Munsell
 /// prior: each light's worst is that of
-/// `FittedRules::with_surfaces(&[light], measured::prior())` computed by
-/// hand, and it is neither the generated prior's rule nor the oracle's.
+/// `FittedRules::with_surfaces(&[light], measured::prior())` (by
+/// `minimax::worst`), and it is neither the generated prior's rule nor the oracle's.
 #[test]
 fn fitted_munsell_is_fitted_over_the_munsell_prior() {
     use speclab::sampling::fitted::FittedRules;
-    use speclab_study::evaluate::perceptual::delta_e00;
-    use speclab_study::published::measured;
+    use speclab_study::published::{measured, minimax};
     let lights = [Named::from(Light::F11), Named::from(Light::D65)];
     let surfaces = scene::builtin_surfaces();
     let candidates = [Candidate::FittedMunsell(6), Candidate::Fitted(6), Candidate::Oracle(6)];
@@ -341,14 +340,8 @@ fn fitted_munsell_is_fitted_over_the_munsell_prior() {
         measured::prior().unwrap().iter().map(|c| &c.spectrum as &dyn Spectrum).collect();
     for (i, light) in lights.iter().enumerate() {
         let rules = FittedRules::with_surfaces(&[&light.spectrum], &prior).unwrap();
-        let (rule, white) = (rules.rule(6).unwrap(), reference::white(&light.spectrum));
-        let worst = surfaces
-            .iter()
-            .map(|s| {
-                let got = rule.xyz_of_product(&[&light.spectrum, &s.spectrum]);
-                delta_e00(got, reference::xyz(&light.spectrum, &s.spectrum), white)
-            })
-            .fold(0.0, f64::max);
+        let own: Vec<&dyn Spectrum> = surfaces.iter().map(|s| &s.spectrum as &dyn Spectrum).collect();
+        let worst = minimax::worst(&light.spectrum, rules.rule(6).unwrap(), &own);
         assert!((rows[0].per_light[i] - worst).abs() <= 1e-12, "{}: {}", light.name, rows[0].per_light[i]);
         assert_ne!(rows[0].per_light[i], rows[1].per_light[i], "{}", light.name);
         assert_ne!(rows[0].per_light[i], rows[2].per_light[i], "{}", light.name);
