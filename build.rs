@@ -37,6 +37,11 @@ fn main() {
     out += &conductors().unwrap_or_else(|e| fail(&e));
     out += &glasses().unwrap_or_else(|e| fail(&e));
     out += &matrix().unwrap_or_else(|e| fail(&e));
+    // The built-in RGB tables, embedded by `include_bytes!`: checked here,
+    // so a damaged file fails the build with its name.
+    let table = "data/rgb/srgb.rgbt";
+    println!("cargo:rerun-if-changed={table}");
+    speclab_tables::rgb_file::check_file(Path::new(table)).unwrap_or_else(|e| fail(&e));
     let dest = Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("data.rs");
     std::fs::write(&dest, out).expect("OUT_DIR is writable");
 }

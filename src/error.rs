@@ -79,6 +79,16 @@ pub enum Error {
         /// The components given.
         rgb: [f64; 3],
     },
+    /// An RGB table file that is not one, or is damaged: its message names
+    /// the file and what was expected.
+    TableFile(speclab_tables::rgb_file::FileError),
+    /// An RGB table given to a space it was not fitted for.
+    TableSpace {
+        /// The name the table's file gives its space.
+        table: String,
+        /// The space it was given to.
+        space: &'static str,
+    },
     /// Chromaticities that do not make an RGB space: every primary and the
     /// white point must be finite with a non-zero y (the white's positive),
     /// and the primaries must span a space.
@@ -176,6 +186,12 @@ impl fmt::Display for Error {
                 "expected linear sRGB components in [0, 1], found ({}, {}, {})",
                 rgb[0], rgb[1], rgb[2]
             ),
+            Error::TableFile(e) => e.fmt(f),
+            Error::TableSpace { table, space } => write!(
+                f,
+                "expected a table fitted for the RGB space {space}, found one fitted for {table:?} \
+                 (another XYZ to RGB matrix or illuminant)"
+            ),
             Error::Primaries => write!(
                 f,
                 "expected primaries and a white point of finite chromaticities with non-zero y \
@@ -258,6 +274,7 @@ impl std::error::Error for Error {
             Error::Parse(e) => Some(e),
             Error::Sample(e) => Some(e),
             Error::Read(e) => Some(e),
+            Error::TableFile(e) => Some(e),
             _ => None,
         }
     }

@@ -12,7 +12,7 @@ pub const USAGE: &str = "\
 usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PATH]...
               [--wavelengths hero|fitted|rgb|prefilter] [--m M]
               [--pdf uniform|visible|light|balanced] [--strata none|jitter|kronecker]
-              [--bins B | --exact-pdf] [--spectra exact|dense] [--precision f64|f32]
+              [--bins B | --exact-pdf] [--spectra exact|dense|rgb] [--space NAME] [--precision f64|f32]
               [--exact] [--survey [--csv PATH] [--strip PATH]] [--reference N] [--threads T] [--out PATH]
   --width, --height  image size in pixels (default 256 × 256)
   --spp N            paths per pixel (default 32)
@@ -29,7 +29,10 @@ usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PA
   --strata S         how a pixel's primary numbers are spread (default jitter)
   --bins B           sample visible and light pdfs from a histogram of B bins
                      (BinnedPdf, default 256); --exact-pdf samples the density itself
-  --spectra S        hero over exact tabulated spectra (default) or dense 1 nm tables
+  --spectra S        hero over exact tabulated spectra (default), dense 1 nm tables, or rgb: every
+                     surface an RGB colour in --space looked up in its table at each hit
+                     (a textured scene; the lights dense)
+  --space NAME       rgb's space: sRGB (default), Display P3, Rec.2020, ACES2065-1, ACEScg
   --precision P      the per-sample values' precision, f64 (default) or f32
   --exact            also integrate each path exactly over wavelength and compare pixel by pixel
                      (ΔE00 in CIELAB of the displayed white)
@@ -86,6 +89,7 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
     };
     let o = &mut a.options;
     let mut parser = lexopt::Parser::from_env();
+    let mut space: Option<&'static str> = None;
     while let Some(arg) = parser.next()? {
         match arg {
             Long("width") => o.width = parser.value()?.parse_with(|v| positive("width", v))?,
@@ -114,7 +118,20 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             Long("strata") => o.sampling.strata = parser.value()?.parse()?,
             Long("spectra") => {
                 let v = parser.value()?.string()?;
-                o.dense = choice(&v, &[("exact", false), ("dense", true)], "exact or dense spectra")?;
+                let kinds = [("exact", (false, false)), ("dense", (true, false)), ("rgb", (true, true))];
+                let (dense, rgb) = choice(&v, &kinds, "exact, dense or rgb spectra")?;
+                o.dense = dense;
+                o.rgb_space = rgb.then_some(o.rgb_space.unwrap_or("sRGB"));
+            }
+            Long("space") => {
+                let v = parser.value()?.string()?;
+                let name = speclab_study::render::run::SPACES.iter().find(|s| s.eq_ignore_ascii_case(&v));
+                let name = name.ok_or_else(|| {
+                    format!(
+                        "expected an RGB space (sRGB, Display P3, Rec.2020, ACES2065-1, ACEScg), found {v:?}"
+                    )
+                })?;
+                space = Some(*name);
             }
             Long("precision") => {
                 let v = parser.value()?.string()?;
@@ -137,6 +154,12 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             }
             _ => return Err(arg.unexpected().into()),
         }
+    }
+    if let Some(name) = space {
+        if a.options.rgb_space.is_none() {
+            return Err("expected --spectra rgb with --space".into());
+        }
+        a.options.rgb_space = Some(name);
     }
     if a.options.width.saturating_mul(a.options.height) > 1 << 24 {
         return Err("expected at most 16 M pixels".into());

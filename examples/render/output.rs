@@ -38,7 +38,11 @@ pub fn report(a: &Args, setup: &Setup, timed: &Timed) {
                 (true, None) => " (exact)".into(),
             },
             o.sampling.strata,
-            if o.dense { "dense" } else { "exact" },
+            match (o.dense, o.rgb_space) {
+                (_, Some(space)) => format!("dense lights, RGB surfaces in {space} looked up at each hit,"),
+                (true, None) => "dense".to_string(),
+                (false, None) => "exact".to_string(),
+            },
         ),
     };
     let (s, g) = (&timed.image, &timed.grey);

@@ -26,9 +26,11 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+use crate::color::rgb::LinearRgb;
 use crate::color::space::RgbSpace;
 use crate::color::srgb::LinearSrgb;
 use crate::error::Error;
+use crate::spectrum::observer::Y_BAR_INTEGRAL;
 use crate::spectrum::{Pieces, SigmoidPolynomial, Spectrum, TabulatedSpectrum};
 
 /// A reflectance from an RGB colour: a sigmoid polynomial, in [0, 1].
@@ -55,6 +57,18 @@ impl Spectrum for RgbAlbedo {
     #[inline]
     fn eval(&self, lambda: f64) -> f64 {
         self.poly.eval(lambda)
+    }
+
+    /// Four lanes in `f32` at once ([`SigmoidPolynomial::eval_many_f32`]).
+    #[inline(always)]
+    fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
+        self.poly.eval_many_f32(1.0, lambda, values);
+    }
+
+    /// As [`RgbAlbedo::eval_many_f32`]: a sigmoid needs no table.
+    #[inline(always)]
+    fn eval_many_nearest_f32(&self, lambda: &[f32], _nearest: &[u16], values: &mut [f32]) {
+        self.poly.eval_many_f32(1.0, lambda, values);
     }
 
     fn pieces(&self) -> Option<Pieces<'_>> {
@@ -94,6 +108,18 @@ impl Spectrum for RgbUnbounded {
     #[inline]
     fn eval(&self, lambda: f64) -> f64 {
         self.scale * self.poly.eval(lambda)
+    }
+
+    /// Four lanes in `f32` at once, scaled.
+    #[inline(always)]
+    fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
+        self.poly.eval_many_f32(self.scale as f32, lambda, values);
+    }
+
+    /// As [`RgbUnbounded::eval_many_f32`].
+    #[inline(always)]
+    fn eval_many_nearest_f32(&self, lambda: &[f32], _nearest: &[u16], values: &mut [f32]) {
+        self.poly.eval_many_f32(self.scale as f32, lambda, values);
     }
 
     fn pieces(&self) -> Option<Pieces<'_>> {
@@ -151,6 +177,19 @@ impl Spectrum for RgbIlluminant {
         self.scale * self.poly.eval(lambda) * self.illuminant.eval(lambda)
     }
 
+    /// The tint's lanes in `f32` times the illuminant's, eight wavelengths
+    /// at a time (no allocation).
+    fn eval_many_nearest_f32(&self, lambda: &[f32], nearest: &[u16], values: &mut [f32]) {
+        let chunks = values.chunks_mut(8).zip(lambda.chunks(8)).zip(nearest.chunks(8));
+        for ((v, l), n) in chunks {
+            let mut light = [0.0f32; 8];
+            let light = &mut light[..v.len()];
+            self.illuminant.eval_many_nearest_f32(l, n, light);
+            self.poly.eval_many_f32(self.scale as f32, l, v);
+            v.iter_mut().zip(light.iter()).for_each(|(v, e)| *v *= e);
+        }
+    }
+
     /// A bound: the scale times the polynomial's maximum times the
     /// illuminant's.
     fn max_value(&self) -> f64 {
@@ -186,6 +225,63 @@ impl RgbIlluminant {
     #[must_use]
     pub fn new(rgb: LinearSrgb) -> Self {
         RgbSpace::srgb().light(rgb)
+    }
+}
+
+/// How an unbounded colour is split into a scale and an albedo.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Split {
+    /// Twice the largest component (pbrt-v4, Mitsuba's `SRGBEmitterSpectrum`).
+    Twice,
+    /// 1 while the largest component is at most 1, the largest beyond.
+    UpToOne,
+}
+
+/// The spectra of a space's colours, looked up in its table.
+///
+/// **Conventions.** pbrt-v4 scales an unbounded colour by twice its
+/// largest component ([`RgbSpace::unbounded`]): the albedo looked up is
+/// the colour at half brightness, where every chromaticity a reflectance
+/// has is reached. A renderer that takes a colour in [0, 1]³ as its own
+/// albedo and scales only brighter ones uses
+/// [`RgbSpace::unbounded_up_to_one`]: the same spectrum as
+/// [`RgbSpace::albedo`] inside the cube. A light given as an RGB colour in
+/// the space is [`RgbSpace::light`] (pbrt-v4's `RGBIlluminantSpectrum`:
+/// the tint times the space's illuminant, so that `(1, 1, 1)` is the
+/// space's white); a renderer that multiplies by a light spectrum of its
+/// own takes the tint alone, [`RgbSpace::unbounded`], or it counts the
+/// illuminant twice.
+impl RgbSpace {
+    /// Any colour as a non-negative spectrum, `scale · s(λ)`: twice the
+    /// largest component times the albedo of the colour over that, looked
+    /// up in the table (pbrt-v4's `RGBUnboundedSpectrum`). Negative and
+    /// NaN components are taken as 0.
+    #[must_use]
+    pub fn unbounded(&self, rgb: impl Into<LinearRgb>) -> RgbUnbounded {
+        let (scale, poly) = self.table().split(rgb.into(), Split::Twice);
+        RgbUnbounded::from_parts(scale, poly)
+    }
+
+    /// Any colour as a non-negative spectrum, scaled "1 up to 1": a colour
+    /// whose largest component is at most 1 is its albedo
+    /// ([`RgbSpace::albedo`], scale 1), a brighter one its largest
+    /// component times the albedo of the colour over that. Negative and
+    /// NaN components are taken as 0.
+    #[must_use]
+    pub fn unbounded_up_to_one(&self, rgb: impl Into<LinearRgb>) -> RgbUnbounded {
+        let (scale, poly) = self.table().split(rgb.into(), Split::UpToOne);
+        RgbUnbounded::from_parts(scale, poly)
+    }
+
+    /// A light of colour `rgb`: [`RgbSpace::unbounded`]'s spectrum times
+    /// the space's illuminant, normalised so that `(1, 1, 1)` has the
+    /// luminance of a constant spectrum of 1 (pbrt-v4's
+    /// `RGBIlluminantSpectrum`). A renderer that multiplies by its own
+    /// light spectrum wants [`RgbSpace::unbounded`] instead.
+    #[must_use]
+    pub fn light(&self, rgb: impl Into<LinearRgb>) -> RgbIlluminant {
+        let (scale, poly) = self.table().split(rgb.into(), Split::Twice);
+        RgbIlluminant::from_parts(scale * Y_BAR_INTEGRAL / self.fit.white_y, poly, self.fit.illuminant)
     }
 }
 

@@ -70,17 +70,16 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use crate::color::matrix::{Matrix, inverse, mul};
 use crate::color::rgb::LinearRgb;
-use crate::color::rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded};
+use crate::color::rgb_spectra::RgbAlbedo;
 use crate::color::rgb_table::{RESOLUTION, RgbTable};
 use crate::color::xyz::Xyz;
 use crate::error::Error;
 use crate::spectrum::TabulatedSpectrum;
 use crate::spectrum::data::lights;
-use crate::spectrum::observer::Y_BAR_INTEGRAL;
 
 /// A chromaticity, CIE 1931 `[x, y]`.
 pub type Chromaticity = [f64; 2];
@@ -96,8 +95,9 @@ pub struct RgbSpace {
     to_rgb: Matrix,
     /// What the spectra of its colours are fitted with.
     pub(crate) fit: crate::color::upsample::Fit,
-    /// Its table of fitted colours, built on first use.
-    table: OnceLock<RgbTable>,
+    /// Its table of fitted colours: built in, or built on first use and
+    /// shared by every clone.
+    table: Arc<OnceLock<RgbTable>>,
 }
 
 impl RgbSpace {
@@ -116,7 +116,7 @@ impl RgbSpace {
         let to_xyz = normalised_primary_matrix(primaries, white).ok_or(Error::Primaries)?;
         let to_rgb = inverse(&to_xyz);
         let fit = crate::color::upsample::Fit::new(illuminant, &to_rgb);
-        Ok(RgbSpace { name, primaries, white, to_xyz, to_rgb, fit, table: OnceLock::new() })
+        Ok(RgbSpace { name, primaries, white, to_xyz, to_rgb, fit, table: Arc::default() })
     }
 
     /// Linear sRGB: IEC 61966-2-1's primaries (those of ITU-R BT.709) and
@@ -126,6 +126,7 @@ impl RgbSpace {
         static SPACE: OnceLock<RgbSpace> = OnceLock::new();
         SPACE.get_or_init(|| {
             standard("sRGB", [[0.64, 0.33], [0.30, 0.60], [0.15, 0.06]], D65, &lights::CIE_D65)
+                .with_built_in(RgbTable::SRGB.clone())
         })
     }
 
@@ -135,7 +136,12 @@ impl RgbSpace {
     pub fn display_p3() -> &'static RgbSpace {
         static SPACE: OnceLock<RgbSpace> = OnceLock::new();
         let primaries = [[0.680, 0.320], [0.265, 0.690], [0.150, 0.060]];
-        SPACE.get_or_init(|| standard("Display P3", primaries, D65, &lights::CIE_D65))
+        SPACE.get_or_init(|| {
+            let space = standard("Display P3", primaries, D65, &lights::CIE_D65);
+            #[cfg(feature = "wide-gamut")]
+            let space = space.with_built_in(RgbTable::DISPLAY_P3.clone());
+            space
+        })
     }
 
     /// ITU-R BT.2020 (Rec. 2020): spectral primaries at 630, 532 and
@@ -144,7 +150,12 @@ impl RgbSpace {
     pub fn rec2020() -> &'static RgbSpace {
         static SPACE: OnceLock<RgbSpace> = OnceLock::new();
         let primaries = [[0.708, 0.292], [0.170, 0.797], [0.131, 0.046]];
-        SPACE.get_or_init(|| standard("Rec.2020", primaries, D65, &lights::CIE_D65))
+        SPACE.get_or_init(|| {
+            let space = standard("Rec.2020", primaries, D65, &lights::CIE_D65);
+            #[cfg(feature = "wide-gamut")]
+            let space = space.with_built_in(RgbTable::REC2020.clone());
+            space
+        })
     }
 
     /// ACES2065-1 (SMPTE ST 2065-1): the AP0 primaries, which enclose every
@@ -155,7 +166,12 @@ impl RgbSpace {
     pub fn aces2065_1() -> &'static RgbSpace {
         static SPACE: OnceLock<RgbSpace> = OnceLock::new();
         let primaries = [[0.7347, 0.2653], [0.0, 1.0], [0.0001, -0.0770]];
-        SPACE.get_or_init(|| standard("ACES2065-1", primaries, ACES, aces_d60()))
+        SPACE.get_or_init(|| {
+            let space = standard("ACES2065-1", primaries, ACES, aces_d60());
+            #[cfg(feature = "wide-gamut")]
+            let space = space.with_built_in(RgbTable::ACES2065_1.clone());
+            space
+        })
     }
 
     /// ACEScg (ACES S-2014-004): the AP1 primaries, a working space for
@@ -164,7 +180,12 @@ impl RgbSpace {
     pub fn acescg() -> &'static RgbSpace {
         static SPACE: OnceLock<RgbSpace> = OnceLock::new();
         let primaries = [[0.713, 0.293], [0.165, 0.830], [0.128, 0.044]];
-        SPACE.get_or_init(|| standard("ACEScg", primaries, ACES, aces_d60()))
+        SPACE.get_or_init(|| {
+            let space = standard("ACEScg", primaries, ACES, aces_d60());
+            #[cfg(feature = "wide-gamut")]
+            let space = space.with_built_in(RgbTable::ACESCG.clone());
+            space
+        })
     }
 
     /// The five built-in spaces.
@@ -231,11 +252,37 @@ impl RgbSpace {
     }
 
     /// The space's table of sigmoid polynomials (`rgb_table::RESOLUTION`³
-    /// colours per case), built on first use: a few seconds in a release
-    /// build on two cores, then every colour is a lookup.
+    /// colours per case): a built-in space's is embedded in the program; a
+    /// space of the caller's own fits its table on first use (seconds to a
+    /// minute in a release build: [`RgbTable::fit`]), shared by its clones,
+    /// unless one was given ([`RgbSpace::with_table`]).
     #[must_use]
+    #[inline]
     pub fn table(&self) -> &RgbTable {
-        self.table.get_or_init(|| RgbTable::new(self, RESOLUTION))
+        self.table.get_or_init(|| RgbTable::fit(self, RESOLUTION))
+    }
+
+    /// The space with `table` as its table (one saved by
+    /// [`RgbTable::save`] and loaded back, or one a program ships): an
+    /// [`Error::TableSpace`] unless the table was fitted for this space
+    /// (its XYZ → RGB matrix, balanced under the space's illuminant, within
+    /// 1e-9 of the space's).
+    pub fn with_table(mut self, table: RgbTable) -> Result<RgbSpace, Error> {
+        let header = table.header();
+        let same = header.matrix.iter().flatten().zip(self.fit.to_rgb.iter().flatten());
+        if !same.into_iter().all(|(a, b)| (a - b).abs() <= 1e-9 * b.abs().max(1.0)) {
+            return Err(Error::TableSpace { table: header.name, space: self.name });
+        }
+        self.table = Arc::new(OnceLock::from(table));
+        Ok(self)
+    }
+
+    /// A built-in space with its embedded table; were the table stale
+    /// (fitted for other matrices: the tests say so), the space fits its
+    /// own on first use instead.
+    fn with_built_in(self, table: RgbTable) -> RgbSpace {
+        let fallback = self.clone();
+        self.with_table(table).unwrap_or(fallback)
     }
 
     /// The reflectance whose colour under the space's illuminant is `rgb`
@@ -251,28 +298,9 @@ impl RgbSpace {
     /// The reflectance whose colour under the space's illuminant is `rgb`
     /// (each component in [0, 1]; otherwise an [`Error::Albedo`]), looked
     /// up in the space's [`table`](RgbSpace::table).
+    #[inline]
     pub fn albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
         self.table().albedo(rgb.into())
-    }
-
-    /// Any colour as a non-negative spectrum, `scale · s(λ)`: twice the
-    /// largest component times the albedo of the colour over that, looked
-    /// up in the table (pbrt-v4's `RGBUnboundedSpectrum`). Negative and
-    /// NaN components are taken as 0.
-    #[must_use]
-    pub fn unbounded(&self, rgb: impl Into<LinearRgb>) -> RgbUnbounded {
-        let (scale, poly) = self.table().split(rgb.into());
-        RgbUnbounded::from_parts(scale, poly)
-    }
-
-    /// A light of colour `rgb`: [`RgbSpace::unbounded`]'s spectrum times
-    /// the space's illuminant, normalised so that `(1, 1, 1)` has the
-    /// luminance of a constant spectrum of 1 (pbrt-v4's
-    /// `RGBIlluminantSpectrum`).
-    #[must_use]
-    pub fn light(&self, rgb: impl Into<LinearRgb>) -> RgbIlluminant {
-        let (scale, poly) = self.table().split(rgb.into());
-        RgbIlluminant::from_parts(scale * Y_BAR_INTEGRAL / self.fit.white_y, poly, self.fit.illuminant)
     }
 }
 

@@ -43,6 +43,7 @@
 use crate::color::lab::{lab, lab_jacobian};
 use crate::color::matrix::{Matrix, inverse, mul};
 use crate::color::rgb::LinearRgb;
+use crate::color::rgb_table::constant;
 use crate::color::xyz::Xyz;
 use crate::spectrum::observer;
 use crate::spectrum::{
@@ -62,7 +63,7 @@ pub(crate) struct Fit {
     white: Xyz,
     /// The illuminant's white's Y, as integrated (for normalising).
     pub(crate) white_y: f64,
-    to_rgb: Matrix,
+    pub(crate) to_rgb: Matrix,
     to_xyz: Matrix,
     /// `(t, weights)`: the normalised wavelength and `w·L·c̄/Y_white`.
     nodes: Vec<(f64, [f64; 3])>,
@@ -314,15 +315,6 @@ const PROBE_STEPS: usize = 12;
 /// `a · b`.
 fn product(a: &Matrix, b: &Matrix) -> Matrix {
     std::array::from_fn(|r| std::array::from_fn(|c| (0..3).map(|k| a[r][k] * b[k][c]).sum()))
-}
-
-/// The constant `v` in [0, 1] as a sigmoid polynomial: 0 and 1 exactly.
-pub(crate) fn constant(v: f64) -> SigmoidPolynomial {
-    match v {
-        0.0 => SigmoidPolynomial::BLACK,
-        1.0 => SigmoidPolynomial::WHITE,
-        v => SigmoidPolynomial::new([0.0, 0.0, inverse_sigmoid(v)]),
-    }
 }
 
 /// The x with `½ + x/(2√(1 + x²)) = s`, for s in (0, 1).

@@ -75,7 +75,7 @@ pub use optics::{Cauchy, Conductor, NormalReflectance, Sellmeier};
 pub use product::Product;
 pub use sampled::{SampledSpectrum, Wavelengths};
 pub use scaled::Scaled;
-pub use sigmoid::{SigmoidPolynomial, sigmoid};
+pub use sigmoid::{SigmoidPolynomial, sigmoid, sigmoid_f32};
 #[doc(hidden)]
 pub use tabulated::Tables;
 pub use tabulated::TabulatedSpectrum;

@@ -71,6 +71,20 @@ impl SigmoidPolynomial {
         sigmoid(interp::segment_max([c2, c1, c0, 0.0], 0.0, 1.0))
     }
 
+    /// `scale` times the values at `lambda` (nm), into `values`, in `f32`
+    /// arithmetic with no branch (the coefficients rounded to `f32`): the
+    /// four lanes of an `f32` hero sample at once, behind a `Box<dyn
+    /// Spectrum>` too (the RGB spectra's `eval_many_f32` and
+    /// `eval_many_nearest_f32`).
+    #[inline(always)]
+    pub fn eval_many_f32(&self, scale: f32, lambda: &[f32], values: &mut [f32]) {
+        let [c0, c1, c2] = self.c.map(|v| v as f32);
+        for (v, &l) in values.iter_mut().zip(lambda) {
+            let t = (l - LAMBDA_MIN as f32) * (1.0 / LAMBDA_WIDTH as f32);
+            *v = scale * sigmoid_f32(c2 + t * (c1 + t * c0));
+        }
+    }
+
     /// True if the polynomial is a constant (`c₀ = c₁ = 0`).
     fn is_constant(&self) -> bool {
         self.c[0] == 0.0 && self.c[1] == 0.0
@@ -99,9 +113,46 @@ pub fn sigmoid(x: f64) -> f64 {
     if x < 0.0 { 0.5 / (r * (r - x)) } else { 0.5 + 0.5 * x / r }
 }
 
+/// [`sigmoid`] in `f32` with one square root, one division and no
+/// branch (so four lanes vectorise): `t = 1/(2r(r + |x|))` is the distance
+/// to the nearer limit, `t` below 0 and `1 − t` above, each without
+/// cancellation; 1 and 0 where `x²` overflows, NaN for NaN.
+#[inline(always)]
+#[must_use]
+pub fn sigmoid_f32(x: f32) -> f32 {
+    let r = (1.0 + x * x).sqrt();
+    let t = 0.5 / (r * (r + x.abs()));
+    if x < 0.0 { t } else { 1.0 - t }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::sigmoid;
+    use super::{SigmoidPolynomial, sigmoid, sigmoid_f32};
+
+    /// The f32 form against the f64 one, relatively, over the range of
+    /// arguments and at the limits; lanes against single values.
+    #[test]
+    fn f32_lanes_follow_f64() {
+        for i in -2000i32..=2000 {
+            let x = f64::from(i) * 0.01 * f64::from(i.abs()).max(1.0);
+            let (exact, single) = (sigmoid(x), f64::from(sigmoid_f32(x as f32)));
+            assert!((single - exact).abs() <= 4e-7 * exact, "x = {x}: {single} against {exact}");
+        }
+        assert_eq!((sigmoid_f32(f32::INFINITY), sigmoid_f32(f32::NEG_INFINITY)), (1.0, 0.0));
+        assert_eq!((sigmoid_f32(1e30), sigmoid_f32(-1e30), sigmoid_f32(0.0)), (1.0, 0.0, 0.5));
+        assert!(sigmoid_f32(f32::NAN).is_nan());
+        let poly = SigmoidPolynomial::new([-20.0, 30.0, -8.0]);
+        let lambda = [380.0f32, 451.5, 555.0, 729.9, 600.0];
+        let mut values = [0.0f32; 5];
+        poly.eval_many_f32(2.0, &lambda, &mut values);
+        for (v, l) in values.iter().zip(lambda) {
+            let exact = 2.0 * poly.eval(f64::from(l));
+            assert!((f64::from(*v) - exact).abs() <= 2e-6 * exact, "{l}: {v} against {exact}");
+        }
+        let mut white = [0.0f32; 2];
+        SigmoidPolynomial::WHITE.eval_many_f32(1.0, &[400.0, 700.0], &mut white);
+        assert_eq!(white, [1.0, 1.0]);
+    }
 
     /// The tail to the last digits (50-digit decimal values, quoted to 20),
     /// the middle, and the limits where `x²` overflows.

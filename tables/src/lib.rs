@@ -53,6 +53,7 @@ pub mod interp;
 pub mod json;
 pub mod range;
 pub mod read;
+pub mod rgb_file;
 pub mod text;
 pub mod validate;
 

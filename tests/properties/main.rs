@@ -14,5 +14,6 @@ mod no_panic;
 mod pdfs;
 mod prepared;
 mod regular;
+mod rgb_table;
 mod spectra;
 mod upsample;

@@ -64,7 +64,7 @@ fn colours_outside_the_albedo_cube_are_errors() {
         let err = RgbAlbedo::new(LinearSrgb::from(bad)).unwrap_err();
         assert!(matches!(err, Error::Albedo { .. }), "{bad:?}");
         assert!(err.to_string().starts_with("expected linear sRGB components in [0, 1], found"), "{err}");
-        assert!(RgbTable::new(RgbSpace::srgb(), 4).albedo(LinearSrgb::from(bad)).is_err());
+        assert!(RgbTable::fit(RgbSpace::srgb(), 4).albedo(LinearSrgb::from(bad)).is_err());
     }
 }
 
@@ -113,7 +113,7 @@ fn smoothstep(t: f64) -> f64 {
 #[test]
 fn table_lookups_at_nodes_are_fits() {
     let n = 8;
-    let table = RgbTable::new(RgbSpace::srgb(), n);
+    let table = RgbTable::fit(RgbSpace::srgb(), n);
     let space = RgbSpace::srgb();
     for (case, k, i, j) in [(0, 5, 3, 0), (1, 7, 0, 4), (2, 2, 6, 6), (0, 6, 1, 5)] {
         let z = smoothstep(smoothstep(f64::from(k) / 7.0));
@@ -135,7 +135,7 @@ fn table_lookups_at_nodes_are_fits() {
 #[test]
 #[ignore = "builds the full table; CI runs it in release"]
 fn table_accuracy_between_nodes() {
-    let table = RgbTable::srgb();
+    let table = RgbTable::SRGB;
     let mut de: Vec<f64> = (0..4000)
         .map(|i| {
             let v = (f64::from(i) * 0.618_033_988_7).fract();
@@ -155,7 +155,7 @@ fn table_accuracy_between_nodes() {
 #[ignore = "builds the full table; CI runs it in release"]
 fn table_round_trip_on_a_grid() {
     let start = std::time::Instant::now();
-    let table = RgbTable::srgb();
+    let table = RgbTable::SRGB;
     eprintln!("the full table built in {:.2} s", start.elapsed().as_secs_f64());
     let mut worst = (0.0f64, LinearSrgb::splat(0.0));
     let mut sum = 0.0;

@@ -39,6 +39,8 @@ struct Row {
 enum Unit {
     /// ns per unit, with its ratio to the hand-tuned kernel.
     Ratio,
+    /// ns per unit, with its ratio to speclab's f32 dense row (row 2).
+    Dense,
     /// ns per call.
     Nanos,
     /// millions of spectra per second, and the ratio to row `.0`.
@@ -60,6 +62,16 @@ fn main() {
         kernels::Material::Rgb(albedo),
     ];
     let (el, es) = (black_box(&list[0]), black_box(&list[1]));
+    let er = black_box(&list[2]);
+    let dyn_albedo: Box<dyn Spectrum + Send + Sync> = Box::new(albedo);
+    // A texture's colours: 64 albedos spread through the cube (golden-ratio steps).
+    let texels: Vec<speclab::color::LinearRgb> = (0..64)
+        .map(|i| {
+            let v = (f64::from(i) * 0.618_033_988_7).fract();
+            speclab::color::LinearRgb::new(v, (v * 3.7).fract(), (v * 7.3).fract())
+        })
+        .collect();
+    let srgb = speclab::color::RgbSpace::srgb();
     let (lc, sc) =
         (RegularSpectrum::<16, Center>::center(light), RegularSpectrum::<16, Center>::center(surface));
     let (lb, sb) = (
@@ -98,6 +110,26 @@ fn main() {
             unit: Unit::Ratio,
         },
         Row { what: "f64 hero K = 4 over dense tables, per wavelength", target: "", unit: Unit::Ratio },
+        Row {
+            what: "f32 hero K = 4, the surface an RGB albedo already looked up, per wavelength",
+            target: "≤ 1× dense f32",
+            unit: Unit::Dense,
+        },
+        Row {
+            what: "the same, the albedo in the enum of kinds, per wavelength",
+            target: "≤ 1× dense f32",
+            unit: Unit::Dense,
+        },
+        Row {
+            what: "the same, the albedo as Box<dyn Spectrum>, per wavelength",
+            target: "",
+            unit: Unit::Dense,
+        },
+        Row {
+            what: "f32 hero K = 4, a texel: space.albedo(rgb) at each hit, then the sample, per wavelength",
+            target: "≤ 2.5× dense f32",
+            unit: Unit::Dense,
+        },
         Row { what: "exact hero K = 4 (f64), per wavelength", target: "≤ 5×", unit: Unit::Ratio },
         Row { what: "exact hero K = 4 (f32), per wavelength", target: "", unit: Unit::Ratio },
         Row { what: "one random wavelength (exact, f64)", target: "≤ 6×", unit: Unit::Ratio },
@@ -134,7 +166,7 @@ fn main() {
             target: "≥ 40 M/s",
             unit: Unit::Throughput(None),
         },
-        Row { what: "batch, 2 threads", target: "≥ 1.6× 1 thread", unit: Unit::Throughput(Some(19)) },
+        Row { what: "batch, 2 threads", target: "≥ 1.6× 1 thread", unit: Unit::Throughput(Some(23)) },
         Row {
             what: "reading the same reflectances alone (a sum), 1 thread",
             target: "",
@@ -148,21 +180,34 @@ fn main() {
         let (mut r1, mut r2, mut r3, mut r4, mut r5) =
             (seed, seed, Pcg32::new(7), seed, XorShift32(0x1234_5678));
         let (mut r6, mut r7, mut r8, mut r9) = (seed, seed, seed, seed);
+        let (mut r10, mut r11, mut r12, mut r13) = (seed, seed, seed, seed);
         let (mut out, mut out2) = (vec![Xyz::ZERO; SPECTRA], vec![Xyz::ZERO; SPECTRA]);
         let mut cases = [
             Case::new("hand-tuned", || (black_box(kernels::hand_tuned_hero(&tables, N, &mut r1)), 4 * N).1),
             Case::new("pbrt-style", || (black_box(kernels::pbrt_hero(&tables, N, &mut r3)), 4 * N).1),
             Case::new("dense f32", || {
-                (black_box(kernels::speclab_dense_hero::<f32, _>(&dl, &ds, N, &mut r6)), 4 * N).1
+                (black_box(kernels::speclab_dense_hero::<f32, _, _>(&dl, &ds, N, &mut r6)), 4 * N).1
             }),
             Case::new("dense f32 enum", || {
-                (black_box(kernels::speclab_dense_hero::<f32, _>(el, es, N, &mut r9)), 4 * N).1
+                (black_box(kernels::speclab_dense_hero::<f32, _, _>(el, es, N, &mut r9)), 4 * N).1
             }),
             Case::new("dense f32 dyn", || {
-                (black_box(kernels::speclab_dense_hero::<f32, _>(&bl, &bs, N, &mut r8)), 4 * N).1
+                (black_box(kernels::speclab_dense_hero::<f32, _, _>(&bl, &bs, N, &mut r8)), 4 * N).1
             }),
             Case::new("dense f64", || {
-                (black_box(kernels::speclab_dense_hero::<f64, _>(&dl, &ds, N, &mut r7)), 4 * N).1
+                (black_box(kernels::speclab_dense_hero::<f64, _, _>(&dl, &ds, N, &mut r7)), 4 * N).1
+            }),
+            Case::new("albedo f32", || {
+                (black_box(kernels::speclab_dense_hero::<f32, _, _>(&dl, &albedo, N, &mut r10)), 4 * N).1
+            }),
+            Case::new("albedo f32 enum", || {
+                (black_box(kernels::speclab_dense_hero::<f32, _, _>(el, er, N, &mut r11)), 4 * N).1
+            }),
+            Case::new("albedo f32 dyn", || {
+                (black_box(kernels::speclab_dense_hero::<f32, _, _>(&bl, &dyn_albedo, N, &mut r12)), 4 * N).1
+            }),
+            Case::new("texel f32", || {
+                (black_box(kernels::speclab_texel_hero(srgb, &dl, &texels, N, &mut r13)), 4 * N).1
             }),
             Case::new("exact f64", || {
                 (black_box(kernels::speclab_hero::<4, f64>(light, surface, N, &mut r2)), 4 * N).1
@@ -278,6 +323,7 @@ fn print_table(rows: &[Row], runs: &[Vec<f64>]) {
     for (i, row) in rows.iter().enumerate() {
         let measured = match row.unit {
             Unit::Ratio => format!("{:.2} ns, {:.2}× hand-tuned", col(i), ratio(i, 0)),
+            Unit::Dense => format!("{:.2} ns, {:.2}× dense f32", col(i), ratio(i, 2)),
             Unit::Nanos => format!("{:.1} ns", col(i)),
             Unit::Throughput(None) => format!("{:.1} M spectra/s", 1e3 / col(i)),
             Unit::Throughput(Some(one)) => {

@@ -141,7 +141,7 @@ fn evaluating(c: &mut Criterion) {
     let dense = DenseSpectrum::new(patch);
     let rgb = LinearSrgb::from([0.6, 0.3, 0.1]);
     let albedo = RgbAlbedo::new(rgb).expect("an albedo");
-    let table = RgbTable::srgb();
+    let table = RgbTable::SRGB;
     let mut group = c.benchmark_group("a spectrum at 4 wavelengths");
     group.bench_function("TabulatedSpectrum (exact cubic)", |b| {
         b.iter(|| black_box(&h).sample(black_box(patch)))

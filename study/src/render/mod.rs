@@ -87,6 +87,10 @@ pub struct Options {
     pub sampling: Sampling,
     /// Hero over dense 1 nm tables instead of the exact tabulated spectra.
     pub dense: bool,
+    /// With `dense`: every surface (the patches and the texels) an RGB
+    /// colour in this built-in space (by name), looked up in the space's
+    /// table at each hit, as a renderer's textures are.
+    pub rgb_space: Option<&'static str>,
     /// Per-sample values in `f32` instead of `f64`.
     pub single: bool,
     /// Bins of the histogram pdf, or `None` for the exact density.
@@ -107,6 +111,7 @@ impl Default for Options {
             m: 10,
             sampling: Sampling { strata: Strata::Jittered, ..Sampling::DEFAULT },
             dense: false,
+            rgb_space: None,
             single: false,
             bins: Some(256),
             threads: 2,

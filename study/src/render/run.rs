@@ -6,8 +6,8 @@
 use std::time::Instant;
 
 use speclab::carry::{Carry, Fitted, Hero, Lanes, Rgb, with_lanes};
-use speclab::color::LinearRgb;
 use speclab::color::lab::lab;
+use speclab::color::{LinearRgb, RgbSpace};
 use speclab::sampling::binned::BinnedPdf;
 use speclab::sampling::choice::PdfKind;
 use speclab::sampling::pdf::WavelengthPdf;
@@ -65,6 +65,22 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
         Way::Hero => {
             let pdf = wavelength_pdf(o, setup)?;
             let (lights, patches) = (setup.light_spectra(), &setup.patches);
+            if let Some(name) = o.rgb_space {
+                let space = RgbSpace::all().into_iter().find(|s| s.name() == name).ok_or_else(|| {
+                    speclab::Error::UnknownName {
+                        what: "an RGB space",
+                        expected: &SPACES,
+                        found: name.into(),
+                    }
+                })?;
+                let l: Vec<DenseSpectrum> = lights.iter().map(DenseSpectrum::new).collect();
+                let s = textured::<DenseSpectrum>(setup, space);
+                return Ok(if o.single {
+                    with.go(&Hero::new(l, s, DenseObserver::new(), pdf).precision::<f32>())
+                } else {
+                    with.go(&Hero::new(l, s, DenseObserver::new(), pdf).precision::<f64>())
+                });
+            }
             Ok(match (o.dense, o.single) {
                 (false, false) => with.go(&hero::<_, _, f64>(setup, lights, patches.clone(), Cie1931, pdf)),
                 (false, true) => with.go(&hero::<_, _, f32>(setup, lights, patches.clone(), Cie1931, pdf)),
@@ -81,6 +97,19 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
             })
         }
     }
+}
+
+/// The built-in spaces' names, for `Options::rgb_space`.
+pub const SPACES: [&str; 5] = ["sRGB", "Display P3", "Rec.2020", "ACES2065-1", "ACEScg"];
+
+/// The scene's surfaces as RGB colours in `space`, each looked up at every
+/// hit: a patch's colour under the space's illuminant, a texel's sRGB
+/// colour taken into the space, each clamped to [0, 1].
+pub fn textured<S>(setup: &Setup, space: &'static RgbSpace) -> Vec<Albedo<S>> {
+    let clamp = |c: LinearRgb| c.map(|v| v.clamp(0.0, 1.0));
+    let patches = setup.patches.iter().map(|p| clamp(space.rgb_of(p)));
+    let texels = setup.colours.iter().map(|&c| clamp(space.rgb(RgbSpace::srgb().xyz(c))));
+    patches.chain(texels).map(|rgb| Albedo::Lookup(rgb, space)).collect()
 }
 
 /// Hero over these lights and patches (the texels after them), in `T`.

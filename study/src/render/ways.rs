@@ -6,7 +6,7 @@
 
 use speclab::Xyz;
 use speclab::carry::Carry;
-use speclab::color::{LinearRgb, RgbAlbedo};
+use speclab::color::{LinearRgb, RgbAlbedo, RgbSpace};
 use speclab::sampling::reference;
 
 use crate::published::prefilter::{Prefiltered, Space};
@@ -21,6 +21,18 @@ pub enum Albedo<S> {
     Measured(S),
     /// An RGB texel's spectrum.
     Texel(RgbAlbedo),
+    /// An RGB colour (in [0, 1]³) in a space, looked up in the space's
+    /// table at every sample, as a texture is read at each hit.
+    Lookup(LinearRgb, &'static RgbSpace),
+}
+
+impl<S> Albedo<S> {
+    /// The albedo of a [`Albedo::Lookup`] (black for a colour outside the
+    /// cube, which `Lookup`s are not made with).
+    #[inline]
+    fn looked_up(rgb: LinearRgb, space: &RgbSpace) -> RgbAlbedo {
+        space.albedo(rgb).unwrap_or(RgbAlbedo::from_polynomial(speclab::spectrum::SigmoidPolynomial::BLACK))
+    }
 }
 
 impl<S: Spectrum> Spectrum for Albedo<S> {
@@ -29,6 +41,7 @@ impl<S: Spectrum> Spectrum for Albedo<S> {
         match self {
             Albedo::Measured(s) => s.eval(lambda),
             Albedo::Texel(t) => t.eval(lambda),
+            Albedo::Lookup(rgb, space) => Self::looked_up(*rgb, space).eval(lambda),
         }
     }
 
@@ -36,6 +49,7 @@ impl<S: Spectrum> Spectrum for Albedo<S> {
         match self {
             Albedo::Measured(s) => s.eval_many(lambda, values),
             Albedo::Texel(t) => t.eval_many(lambda, values),
+            Albedo::Lookup(rgb, space) => Self::looked_up(*rgb, space).eval_many(lambda, values),
         }
     }
 
@@ -43,6 +57,7 @@ impl<S: Spectrum> Spectrum for Albedo<S> {
         match self {
             Albedo::Measured(s) => s.eval_many_f32(lambda, values),
             Albedo::Texel(t) => t.eval_many_f32(lambda, values),
+            Albedo::Lookup(rgb, space) => Self::looked_up(*rgb, space).eval_many_f32(lambda, values),
         }
     }
 
@@ -51,6 +66,7 @@ impl<S: Spectrum> Spectrum for Albedo<S> {
         match self {
             Albedo::Measured(s) => s.sample(at),
             Albedo::Texel(t) => t.sample(at),
+            Albedo::Lookup(rgb, space) => Self::looked_up(*rgb, space).sample(at),
         }
     }
 
@@ -58,6 +74,7 @@ impl<S: Spectrum> Spectrum for Albedo<S> {
         match self {
             Albedo::Measured(s) => s.pieces(),
             Albedo::Texel(t) => t.pieces(),
+            Albedo::Lookup(..) => None,
         }
     }
 
@@ -65,6 +82,7 @@ impl<S: Spectrum> Spectrum for Albedo<S> {
         match self {
             Albedo::Measured(s) => s.samples(),
             Albedo::Texel(t) => t.samples(),
+            Albedo::Lookup(..) => None,
         }
     }
 }

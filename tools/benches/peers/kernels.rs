@@ -19,7 +19,7 @@
 //! speclab kernel uses the same xorshift32 as the hand-tuned one.
 
 use speclab::SampledSpectrum;
-use speclab::color::RgbAlbedo;
+use speclab::color::{LinearRgb, RgbAlbedo, RgbSpace};
 use speclab::spectrum::observer::xyz_bar;
 use speclab::spectrum::{DenseSpectrum, Float, Wavelengths};
 use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum, TabulatedSpectrum, Xyz};
@@ -118,8 +118,8 @@ pub fn speclab_hero<const K: usize, T: Float>(
 /// of `n` hero samples. `S` is how the renderer holds its materials (the
 /// table itself, or `Box<dyn Spectrum>`).
 #[inline(never)]
-pub fn speclab_dense_hero<T: Float, S: Spectrum>(
-    light: &S,
+pub fn speclab_dense_hero<T: Float, L: Spectrum, S: Spectrum>(
+    light: &L,
     surface: &S,
     n: usize,
     rng: &mut XorShift32,
@@ -129,6 +129,27 @@ pub fn speclab_dense_hero<T: Float, S: Spectrum>(
         let u = T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
         let h = HeroSample::<4, T>::new(u);
         sum += h.to_xyz(light.sample(&h) * surface.sample(&h));
+    }
+    sum / n as f64
+}
+
+/// [`speclab_dense_hero`] with the surface a texture's colour looked up at
+/// each hit (`space.albedo(rgb)`, as pbrt-v4 builds an
+/// `RGBAlbedoSpectrum` at each shading point), `f32`.
+#[inline(never)]
+pub fn speclab_texel_hero(
+    space: &RgbSpace,
+    light: &DenseSpectrum,
+    texels: &[LinearRgb],
+    n: usize,
+    rng: &mut XorShift32,
+) -> Xyz {
+    let mut sum = Xyz::ZERO;
+    for i in 0..n {
+        let u = f64::from(rng.next()) * (1.0 / 4_294_967_296.0);
+        let h = HeroSample::<4, f32>::new(u as f32);
+        let albedo = space.albedo(texels[i % texels.len()]).expect("texels are albedos");
+        sum += h.to_xyz(light.sample(&h) * albedo.sample(&h));
     }
     sum / n as f64
 }

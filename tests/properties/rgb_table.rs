@@ -1,0 +1,154 @@
+//! The built-in RGB tables as data: each embedded table against fresh fits
+//! at a sample of its nodes, the table file round trip bit for bit, clear
+//! errors for damaged and foreign files, `const` colours equal to run-time
+//! ones, and clones that share one table.
+
+use speclab::color::difference::delta_e00;
+use speclab::color::rgb_table::{RESOLUTION, RgbTable, node};
+use speclab::color::{LinearRgb, RgbAlbedo, RgbSpace};
+use speclab::{Error, Spectrum};
+
+/// ΔE00 between the colour asked for and `albedo`'s under the space's
+/// illuminant.
+fn round_trip(space: &RgbSpace, rgb: LinearRgb, albedo: &RgbAlbedo) -> f64 {
+    delta_e00(space.xyz(space.rgb_of(albedo)), space.xyz(rgb), space.white())
+}
+
+/// The colour of node `(case, k, j, i)` of a table of `n` nodes per axis.
+fn node_colour(case: usize, k: usize, j: usize, i: usize, n: usize) -> LinearRgb {
+    let z = f64::from(node(k, n));
+    let mut c = [0.0; 3];
+    c[case] = z;
+    c[(case + 1) % 3] = i as f64 / (n - 1) as f64 * z;
+    c[(case + 2) % 3] = j as f64 / (n - 1) as f64 * z;
+    LinearRgb::from(c)
+}
+
+/// Every built-in space's embedded table holds, at 60 nodes chosen by a
+/// fixed sequence, the reflectance a fit for the node's colour alone
+/// gives, wherever that fit reaches the colour (ΔE00 ≤ 0.01; a few dark
+/// ACES2065-1 nodes lie at the object colours' limit, where the fit itself
+/// misses by up to 0.0064): the two reflectances' colours within ΔE00 2e-3
+/// of each other (the fits' tolerance and the table's `f32` rounding). A
+/// stale table (fitted for another space's matrices) misses by whole units,
+/// or is refused.
+#[test]
+fn embedded_tables_are_the_fits_at_their_nodes() {
+    for space in RgbSpace::all() {
+        assert_eq!(space.table().resolution(), RESOLUTION, "{}", space.name());
+        assert!(space.table().header().name == space.name(), "{}: a built-in table", space.name());
+        let colour = |albedo: &RgbAlbedo| space.xyz(space.rgb_of(albedo));
+        let mut checked = 0;
+        for s in 0..60u32 {
+            let pick =
+                |m: u32, salt: u32| ((s.wrapping_mul(2_654_435_761) ^ salt) >> 7) as usize % m as usize;
+            let (case, k, j, i) = (pick(3, 1), 1 + pick(63, 2), pick(64, 3), pick(64, 4));
+            let rgb = node_colour(case, k, j, i, RESOLUTION);
+            let fitted = space.fit_albedo(rgb).unwrap();
+            if round_trip(space, rgb, &fitted) > 0.01 {
+                continue; // no reflectance has it
+            }
+            let de = delta_e00(colour(&space.albedo(rgb).unwrap()), colour(&fitted), space.white());
+            assert!(
+                de < 2e-3,
+                "{}: node {case} {k} {j} {i} ({rgb:?}): table and fit {de} apart",
+                space.name()
+            );
+            checked += 1;
+        }
+        assert!(checked >= 20, "{}: only {checked} reachable nodes checked", space.name());
+    }
+}
+
+/// Saved and loaded, a table is the same bytes; a built-in one too; a
+/// loaded table given to its space is used by it.
+#[test]
+fn saved_tables_load_back_bit_for_bit() {
+    let dir = std::env::temp_dir().join(format!("speclab-rgb-table-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let fitted = RgbTable::fit(RgbSpace::srgb(), 6);
+    for (name, table) in [("fitted", &fitted), ("built-in", RgbTable::SRGB)] {
+        let path = dir.join(format!("{name}.rgbt"));
+        table.save(&path).unwrap();
+        let back = RgbTable::load(&path).unwrap();
+        assert_eq!(back.as_bytes(), table.as_bytes(), "{name}");
+        assert_eq!(back.resolution(), table.resolution());
+    }
+    let rgb = LinearRgb::new(0.7, 0.2, 0.4);
+    let space =
+        RgbSpace::srgb().clone().with_table(RgbTable::load(dir.join("fitted.rgbt")).unwrap()).unwrap();
+    assert_eq!(space.albedo(rgb).unwrap(), fitted.albedo(rgb).unwrap());
+    assert_ne!(space.albedo(rgb).unwrap(), RgbSpace::srgb().albedo(rgb).unwrap());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A file that is not a table, a damaged one, a cut one, a missing one and
+/// a table of another space: each a clear error naming what is wrong.
+#[test]
+fn damaged_and_foreign_tables_are_refused() {
+    let good = RgbTable::fit(RgbSpace::srgb(), 3);
+    let bytes = good.as_bytes();
+    let mut flipped = bytes.to_vec();
+    flipped[300] ^= 0x10;
+    let cases: [(&[u8], &str); 4] = [
+        (b"\x89PNG\r\n\x1a\n not a table", "lamp.rgbt: expected an RGB table file"),
+        (&flipped, "lamp.rgbt: expected checksum"),
+        (&bytes[..bytes.len() - 5], "lamp.rgbt: expected 1108 bytes for its resolution, found 1103"),
+        (&[], "lamp.rgbt: expected an RGB table file"),
+    ];
+    for (bytes, message) in cases {
+        let e = RgbTable::from_bytes(bytes, "lamp.rgbt").unwrap_err();
+        assert!(matches!(e, Error::TableFile(_)) && e.to_string().starts_with(message), "{e}");
+    }
+    let missing = RgbTable::load("/nonexistent/srgb.rgbt").unwrap_err();
+    assert!(missing.to_string().starts_with("/nonexistent/srgb.rgbt: cannot read"), "{missing}");
+    let foreign = RgbSpace::display_p3().clone().with_table(good).unwrap_err();
+    assert_eq!(
+        foreign.to_string(),
+        "expected a table fitted for the RGB space Display P3, found one fitted for \"sRGB\" \
+         (another XYZ to RGB matrix or illuminant)"
+    );
+}
+
+/// A `const` colour is the run-time lookup's, to the bit, over 2,000
+/// colours through the cube and at greys; out-of-range components are
+/// `None`, and so is a table fitted at run time.
+#[test]
+fn const_colours_are_run_time_colours() {
+    const RED: Option<RgbAlbedo> = RgbTable::SRGB.const_albedo([0.8, 0.1, 0.05]);
+    assert_eq!(RED, Some(RgbSpace::srgb().albedo(LinearRgb::new(0.8, 0.1, 0.05)).unwrap()));
+    for i in 0..2000 {
+        let v = (f64::from(i) * 0.618_033_988_7).fract();
+        let rgb = [v, (v * 3.7).fract(), (v * 7.3).fract()].map(|c| c as f32);
+        let run_time = RgbSpace::srgb().albedo(LinearRgb::from(rgb.map(f64::from))).unwrap();
+        assert_eq!(RgbTable::SRGB.const_albedo(rgb), Some(run_time), "{rgb:?}");
+    }
+    for grey in [0.0f32, 0.18, 0.5, 1.0] {
+        let albedo = RgbTable::SRGB.const_albedo([grey; 3]).unwrap();
+        assert_eq!(albedo, RgbSpace::srgb().albedo(LinearRgb::splat(f64::from(grey))).unwrap());
+        for lambda in [400.0, 550.0, 700.0] {
+            assert!((albedo.eval(lambda) - f64::from(grey)).abs() < 1e-12, "{grey} at {lambda}");
+        }
+    }
+    for bad in [[1.5, 0.0, 0.0], [-0.1, 0.5, 0.5], [f32::NAN, 0.0, 0.0]] {
+        assert_eq!(RgbTable::SRGB.const_albedo(bad), None, "{bad:?}");
+    }
+    assert_eq!(RgbTable::fit(RgbSpace::srgb(), 2).const_albedo([0.5, 0.2, 0.1]), None);
+}
+
+/// Clones of a space share its table: the same bytes at the same address.
+#[test]
+fn clones_share_one_table() {
+    let space = RgbSpace::new(
+        "mine",
+        RgbSpace::srgb().primaries(),
+        RgbSpace::srgb().white_point(),
+        RgbSpace::srgb().illuminant(),
+    )
+    .unwrap();
+    let space = space.with_table(RgbTable::fit(RgbSpace::srgb(), 4)).unwrap();
+    let clone = space.clone();
+    assert!(std::ptr::eq(space.table().as_bytes(), clone.table().as_bytes()));
+    let srgb = RgbSpace::srgb().clone();
+    assert!(std::ptr::eq(srgb.table().as_bytes(), RgbTable::SRGB.as_bytes()));
+}

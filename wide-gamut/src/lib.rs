@@ -1,0 +1,29 @@
+//! # speclab-wide-gamut: the tables of speclab's wide-gamut RGB spaces
+//!
+//! Data only (static arrays, so that each table is in the program once): the RGB-to-spectrum tables (Jakob and Hanika's sigmoid
+//! polynomials, 3 × 64³ coefficient triples in `f32`) of four of
+//! [speclab](https://docs.rs/speclab)'s built-in spaces, each a table file
+//! in the layout of `speclab_tables::rgb_file`, fitted by speclab's
+//! `rgb-tables` program and checked by this crate's build script. speclab
+//! reads them through its default feature `wide-gamut` (without it, those
+//! spaces fit their tables on first use); sRGB's lives in speclab itself.
+//!
+//! ```
+//! assert_eq!(&speclab_wide_gamut::ACESCG[..8], b"SPCLBRGB");
+//! assert_eq!(speclab_wide_gamut::ACESCG.len(), 128 + 12 * 3 * 64 * 64 * 64 + 8);
+//! ```
+
+#![no_std]
+
+/// The length of each file: 128 bytes of header, `3 · 64³` coefficient
+/// triples of `f32`, 8 of checksum.
+pub const LEN: usize = 128 + 12 * 3 * 64 * 64 * 64 + 8;
+
+/// Display P3's table file.
+pub static DISPLAY_P3: [u8; LEN] = *include_bytes!("../data/display-p3.rgbt");
+/// Rec.2020's table file.
+pub static REC2020: [u8; LEN] = *include_bytes!("../data/rec2020.rgbt");
+/// ACES2065-1's table file.
+pub static ACES2065_1: [u8; LEN] = *include_bytes!("../data/aces2065-1.rgbt");
+/// ACEScg's table file.
+pub static ACESCG: [u8; LEN] = *include_bytes!("../data/acescg.rgbt");
