@@ -102,6 +102,12 @@ impl RgbUnbounded {
     pub const fn scale(&self) -> f64 {
         self.scale
     }
+
+    /// Its sigmoid polynomial.
+    #[must_use]
+    pub const fn polynomial(&self) -> SigmoidPolynomial {
+        self.poly
+    }
 }
 
 impl Spectrum for RgbUnbounded {

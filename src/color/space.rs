@@ -24,9 +24,10 @@
 //! by up to 5e-4.
 //!
 //! **Spectra of RGB colours** in a space: [`RgbSpace::albedo`],
-//! [`RgbSpace::unbounded`] and [`RgbSpace::illuminant`] look a colour up in
-//! the space's table (`rgb_table`, built on first use); a colour's spectrum
-//! under the space's illuminant has that colour. Integrals run over
+//! [`RgbSpace::unbounded`] and [`RgbSpace::light`] look a colour up in the
+//! space's table (`rgb_table`: embedded for the built-in spaces, fitted on
+//! first use for a space of the caller's); a colour's spectrum under the
+//! space's illuminant ([`RgbSpace::illuminant`]) has that colour. Integrals run over
 //! 380–730 nm like every colour here, where the illuminant's white is not
 //! exactly the published white point (D65's chromaticity over 380–730 nm
 //! is off by about 1e-4): the fit balances each channel so that the
@@ -51,8 +52,8 @@
 //! use speclab::spectrum::{Blackbody, DenseSpectrum};
 //! use speclab::{HeroSample, SampledSpectrum, Spectrum, Xyz, sampling::reference};
 //! let acescg = RgbSpace::acescg();
-//! // A texel's reflectance; `acescg.albedo(rgb)` looks it up in the space's
-//! // table instead (built on first use, then a lookup per texel).
+//! // A texel's reflectance, fitted for this colour alone (about 10 µs);
+//! // `acescg.albedo(rgb)` looks it up in the space's embedded table instead.
 //! let texel = acescg.fit_albedo(LinearRgb::new(0.5, 0.25, 0.1))?;
 //! let lamp = Blackbody::absolute(3200.0)?; // W·sr⁻¹·m⁻²·nm⁻¹
 //! let (light, wall) = (DenseSpectrum::new(&lamp), DenseSpectrum::new(&texel));

@@ -152,3 +152,62 @@ fn clones_share_one_table() {
     let srgb = RgbSpace::srgb().clone();
     assert!(std::ptr::eq(srgb.table().as_bytes(), RgbTable::SRGB.as_bytes()));
 }
+
+/// "1 up to 1": inside the cube a colour is its albedo at scale 1; beyond,
+/// its largest component times the albedo of the colour over that;
+/// pbrt-v4's rule halves the albedo's brightness instead. Both spectra of
+/// a bright colour have its colour (different spectra: metamers).
+#[test]
+fn unbounded_up_to_one_and_twice() {
+    let space = RgbSpace::srgb();
+    let inside = LinearRgb::new(0.6, 0.3, 0.1);
+    let one = space.unbounded_up_to_one(inside);
+    assert_eq!(one.scale(), 1.0);
+    assert_eq!(one.polynomial(), space.albedo(inside).unwrap().polynomial());
+    let twice = space.unbounded(inside);
+    assert_eq!(twice.scale(), 1.2);
+    assert_eq!(twice.polynomial(), space.albedo(inside / 1.2).unwrap().polynomial());
+    let bright = LinearRgb::new(4.0, 1.0, 0.2);
+    let one = space.unbounded_up_to_one(bright);
+    assert_eq!(one.scale(), 4.0);
+    assert_eq!(one.polynomial(), space.albedo(bright / 4.0).unwrap().polynomial());
+    // Two metamers of one colour: each comes back as the colour (measured
+    // at the brightness of the largest component 1).
+    for spectrum in [one, space.unbounded(bright)] {
+        let de = delta_e00(space.xyz(space.rgb_of(&spectrum) / 4.0), space.xyz(bright / 4.0), space.white());
+        assert!(de < 0.05, "{spectrum:?}: {de}");
+    }
+    assert_eq!(space.unbounded_up_to_one(LinearRgb::new(-1.0, f64::NAN, 0.0)).scale(), 0.0);
+    assert_eq!(space.unbounded_up_to_one(LinearRgb::new(-1.0, 0.5, 0.0)).scale(), 1.0);
+}
+
+/// The RGB spectra's `f32` lanes (a hero sample's, and behind a `Box<dyn
+/// Spectrum>`) against their `f64` values: within the `f32` polynomial's
+/// rounding, `4ε·(1 + Σ|cᵢ|)` relatively (the illuminant's own `f32`
+/// rounding beside it for a light).
+#[test]
+fn rgb_spectra_sample_in_f32_lanes() {
+    use speclab::HeroSample;
+    use speclab::spectrum::Wavelengths;
+    let space = RgbSpace::acescg();
+    let rgb = LinearRgb::new(2.0, 0.7, 0.3);
+    let spectra: [Box<dyn Spectrum>; 3] = [
+        Box::new(space.albedo(rgb / 2.0).unwrap()),
+        Box::new(space.unbounded(rgb)),
+        Box::new(space.light(rgb)),
+    ];
+    let c = space.unbounded(rgb).polynomial().coefficients();
+    let bound = 4.0 * f64::from(f32::EPSILON) * (2.0 + c.iter().map(|v| v.abs()).sum::<f64>());
+    for i in 0..200 {
+        let h = HeroSample::<4, f32>::new((i as f32 + 0.5) / 200.0);
+        for (which, s) in spectra.iter().enumerate() {
+            for (v, l) in h.sample(s).values.iter().zip(h.lambda()) {
+                let exact = s.eval(f64::from(*l));
+                assert!(
+                    (f64::from(*v) - exact).abs() <= bound * exact.abs().max(1e-3),
+                    "spectrum {which} at {l}: {v} against {exact}"
+                );
+            }
+        }
+    }
+}
