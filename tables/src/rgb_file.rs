@@ -240,6 +240,21 @@ pub fn check_file(path: &std::path::Path) -> Result<Header, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// Any bytes, and a good file with any byte changed or cut
+        /// anywhere: an error or the file, never a panic; a changed good
+        /// file is always an error.
+        #[test]
+        fn parse_never_panics(bytes in proptest::collection::vec(any::<u8>(), 0..600), at in 0usize..424, bit in 0u8..8, cut in 0usize..424) {
+            let _ = parse(&bytes, "x");
+            let mut changed = tiny();
+            changed[at] ^= 1 << bit;
+            prop_assert!(parse(&changed, "x").is_err());
+            prop_assert!(parse(&tiny()[..cut], "x").is_err());
+        }
+    }
 
     fn tiny() -> Vec<u8> {
         let header = Header { resolution: 2, matrix: [[2.0; 3]; 3], name: "tiny".into() };
