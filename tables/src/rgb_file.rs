@@ -191,9 +191,8 @@ pub fn parse(bytes: &[u8], origin: &str) -> Result<Header, FileError> {
         return Err(fail(FileErrorKind::Length { expected, found: bytes.len() }));
     }
     let word = |at: usize| u32::from_le_bytes([bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]]);
-    match (word(8), word(12), word(16), word(20)) {
-        (VERSION, _, _, _) => {}
-        (v, ..) => return Err(fail(FileErrorKind::Version(v))),
+    if word(8) != VERSION {
+        return Err(fail(FileErrorKind::Version(word(8))));
     }
     let resolution = word(12);
     if !(2..=MAX_RESOLUTION).contains(&resolution) {
@@ -202,14 +201,7 @@ pub fn parse(bytes: &[u8], origin: &str) -> Result<Header, FileError> {
     if word(16) != GRID || word(20) != 0 {
         return Err(fail(FileErrorKind::Grid(word(16).max(word(20)))));
     }
-    let f64_at = |at: usize| f64::from_le_bytes(std::array::from_fn(|i| bytes[at + i]));
-    let matrix: [[f64; 3]; 3] =
-        std::array::from_fn(|r| std::array::from_fn(|c| f64_at(24 + 8 * (3 * r + c))));
-    let name_bytes = &bytes[96..128];
-    let name_len = name_bytes.iter().position(|&b| b == 0).unwrap_or(32);
-    let name =
-        std::str::from_utf8(&name_bytes[..name_len]).map_err(|_| fail(FileErrorKind::Name))?.to_string();
-    let header = Header { resolution, matrix, name };
+    let header = read_header(bytes).ok_or_else(|| fail(FileErrorKind::Name))?;
     if bytes.len() != header.file_len() {
         return Err(fail(FileErrorKind::Length { expected: header.file_len(), found: bytes.len() }));
     }
@@ -219,7 +211,7 @@ pub fn parse(bytes: &[u8], origin: &str) -> Result<Header, FileError> {
     if stored != computed {
         return Err(fail(FileErrorKind::Checksum { stored, computed }));
     }
-    if let Some(r) = (0..9).find(|&i| !f64_at(24 + 8 * i).is_finite()) {
+    if let Some(r) = header.matrix.iter().flatten().position(|v| !v.is_finite()) {
         return Err(fail(FileErrorKind::NonFinite { offset: 24 + 8 * r }));
     }
     let floats = body[HEADER_LEN..].chunks_exact(4);
@@ -228,6 +220,21 @@ pub fn parse(bytes: &[u8], origin: &str) -> Result<Header, FileError> {
         return Err(fail(FileErrorKind::NonFinite { offset: HEADER_LEN + 4 * i }));
     }
     Ok(header)
+}
+
+/// The header's resolution, matrix and name, read without checking the
+/// rest (for bytes [`parse`] has checked): `None` for fewer than
+/// [`HEADER_LEN`] bytes or a name that is not UTF-8.
+#[must_use]
+pub fn read_header(bytes: &[u8]) -> Option<Header> {
+    let head = bytes.first_chunk::<HEADER_LEN>()?;
+    let resolution = u32::from_le_bytes([head[12], head[13], head[14], head[15]]);
+    let f64_at = |at: usize| f64::from_le_bytes(std::array::from_fn(|i| head[at + i]));
+    let matrix = std::array::from_fn(|r| std::array::from_fn(|c| f64_at(24 + 8 * (3 * r + c))));
+    let name = &head[96..];
+    let len = name.iter().position(|&b| b == 0).unwrap_or(32);
+    let name = std::str::from_utf8(&name[..len]).ok()?.to_string();
+    Some(Header { resolution, matrix, name })
 }
 
 /// Reads and checks the table file at `path` (for build scripts, which

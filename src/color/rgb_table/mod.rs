@@ -104,12 +104,14 @@ impl RgbTable {
     /// A table built into the program (checked by the build script).
     const fn embedded(bytes: &'static [u8]) -> RgbTable {
         let n = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]) as usize;
-        RgbTable {
-            bytes: Bytes::Static(bytes),
-            n,
-            nodes: lookup::nodes(n),
-            guesses: lookup::guesses(&lookup::nodes(n), n),
-        }
+        RgbTable::with_bytes(Bytes::Static(bytes), n)
+    }
+
+    /// The table of checked `bytes` of `n` nodes per axis, with its nodes
+    /// and guesses.
+    const fn with_bytes(bytes: Bytes, n: usize) -> RgbTable {
+        let nodes = lookup::nodes(n);
+        RgbTable { bytes, n, nodes, guesses: lookup::guesses(&nodes, n) }
     }
 
     /// The table of `space` with `resolution` nodes per axis (2 to 256),
@@ -125,12 +127,7 @@ impl RgbTable {
             bytes.extend(triple.iter().flat_map(|v| v.to_le_bytes()));
         }
         rgb_file::finish(&mut bytes);
-        RgbTable {
-            bytes: Bytes::Shared(bytes.into()),
-            n,
-            nodes: lookup::nodes(n),
-            guesses: lookup::guesses(&lookup::nodes(n), n),
-        }
+        RgbTable::with_bytes(Bytes::Shared(bytes.into()), n)
     }
 
     /// The table in `bytes`, a table file's contents, checked (magic,
@@ -138,13 +135,7 @@ impl RgbTable {
     /// the error.
     pub fn from_bytes(bytes: &[u8], origin: &str) -> Result<RgbTable, Error> {
         let header = rgb_file::parse(bytes, origin).map_err(Error::TableFile)?;
-        let n = header.resolution as usize;
-        Ok(RgbTable {
-            bytes: Bytes::Shared(bytes.into()),
-            n,
-            nodes: lookup::nodes(n),
-            guesses: lookup::guesses(&lookup::nodes(n), n),
-        })
+        Ok(RgbTable::with_bytes(Bytes::Shared(bytes.into()), header.resolution as usize))
     }
 
     /// The table in the file at `path`, checked as [`RgbTable::from_bytes`].
@@ -181,7 +172,9 @@ impl RgbTable {
     /// matrix the table was fitted for.
     #[must_use]
     pub fn header(&self) -> rgb_file::Header {
-        header_fields(self.as_bytes())
+        let unreadable =
+            || rgb_file::Header { resolution: self.n as u32, matrix: [[0.0; 3]; 3], name: String::new() };
+        rgb_file::read_header(self.as_bytes()).unwrap_or_else(unreadable)
     }
 
     /// The albedo of `rgb` (each component in [0, 1]; otherwise an
@@ -248,18 +241,6 @@ impl RgbTable {
         let k = lookup::interval(z, &self.nodes, &self.guesses, self.n);
         let c = lookup::interpolate_lanes(self.as_bytes(), &self.nodes, self.n, rgb, case, k);
         SigmoidPolynomial::new(c.map(f64::from))
-    }
-}
-
-/// The header's fields of a checked table's bytes.
-fn header_fields(bytes: &[u8]) -> rgb_file::Header {
-    let f = |at: usize| f64::from_le_bytes(std::array::from_fn(|i| bytes[at + i]));
-    let name_bytes = &bytes[96..128];
-    let len = name_bytes.iter().position(|&b| b == 0).unwrap_or(32);
-    rgb_file::Header {
-        resolution: u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]),
-        matrix: std::array::from_fn(|r| std::array::from_fn(|c| f(24 + 8 * (3 * r + c)))),
-        name: String::from_utf8_lossy(&name_bytes[..len]).into_owned(),
     }
 }
 
