@@ -99,6 +99,8 @@ fn damaged_and_foreign_tables_are_refused() {
     for (bytes, message) in cases {
         let e = RgbTable::from_bytes(bytes, "lamp.rgbt").unwrap_err();
         assert!(matches!(e, Error::TableFile(_)) && e.to_string().starts_with(message), "{e}");
+        let source = std::error::Error::source(&e).expect("the file's error");
+        assert_eq!(source.to_string(), e.to_string());
     }
     let missing = RgbTable::load("/nonexistent/srgb.rgbt").unwrap_err();
     assert!(missing.to_string().starts_with("/nonexistent/srgb.rgbt: cannot read"), "{missing}");
@@ -198,6 +200,15 @@ fn rgb_spectra_sample_in_f32_lanes() {
     ];
     let c = space.unbounded(rgb).polynomial().coefficients();
     let bound = 4.0 * f64::from(f32::EPSILON) * (2.0 + c.iter().map(|v| v.abs()).sum::<f64>());
+    let lambda: Vec<f32> = (0..=35).map(|i| 380.0 + 10.0 * i as f32).collect();
+    for (which, s) in spectra.iter().enumerate() {
+        let mut values = vec![f32::NAN; lambda.len()];
+        s.eval_many_f32(&lambda, &mut values);
+        for (v, l) in values.iter().zip(&lambda) {
+            let exact = s.eval(f64::from(*l));
+            assert!((f64::from(*v) - exact).abs() <= bound * exact.abs().max(1e-3), "{which} at {l}: {v}");
+        }
+    }
     for i in 0..200 {
         let h = HeroSample::<4, f32>::new((i as f32 + 0.5) / 200.0);
         for (which, s) in spectra.iter().enumerate() {
