@@ -133,9 +133,27 @@ pub(crate) const fn case_of(rgb: [f32; 3]) -> (usize, f32) {
     (case, rgb[case])
 }
 
-/// The coefficients of `rgb` (in [0, 1]³, not a grey: `z > 0`) in the
-/// table `bytes` with these `nodes`, `n` per axis, given the case and the
-/// interval `k`.
+/// Where `rgb` (in [0, 1]³, not a grey: `z > 0`) falls in a table with
+/// these `nodes`, `n` per axis, given the case and the interval `k`: its
+/// first corner's triple, and the fractions `[dx, dy, dz]` along the
+/// three axes.
+#[inline(always)]
+const fn corner(
+    nodes: &[f32; MAX_NODES],
+    n: usize,
+    rgb: [f32; 3],
+    case: usize,
+    k: usize,
+) -> (usize, [f32; 3]) {
+    let z = rgb[case];
+    let scale = (n - 1) as f32 / z;
+    let (x, y) = (rgb[(case + 1) % 3] * scale, rgb[(case + 2) % 3] * scale);
+    let (xi, yi) = (index(x, n), index(y, n));
+    let (z0, z1) = (nodes[k], nodes[k + 1]);
+    (((case * n + k) * n + yi) * n + xi, [x - xi as f32, y - yi as f32, (z - z0) / (z1 - z0)])
+}
+
+/// The coefficients of `rgb` in the table `bytes` (as [`corner`]).
 #[inline(always)]
 pub(crate) const fn interpolate(
     bytes: &[u8],
@@ -145,21 +163,15 @@ pub(crate) const fn interpolate(
     case: usize,
     k: usize,
 ) -> [f32; 3] {
-    let z = rgb[case];
-    let scale = (n - 1) as f32 / z;
-    let (x, y) = (rgb[(case + 1) % 3] * scale, rgb[(case + 2) % 3] * scale);
-    let (xi, yi) = (index(x, n), index(y, n));
-    let (dx, dy) = (x - xi as f32, y - yi as f32);
-    let (z0, z1) = (nodes[k], nodes[k + 1]);
-    let dz = (z - z0) / (z1 - z0);
-    let low = plane(bytes, n, ((case * n + k) * n + yi) * n + xi, dx, dy);
-    let high = plane(bytes, n, ((case * n + k + 1) * n + yi) * n + xi, dx, dy);
+    let (at, [dx, dy, dz]) = corner(nodes, n, rgb, case, k);
+    let low = plane(bytes, n, at, dx, dy);
+    let high = plane(bytes, n, at + n * n, dx, dy);
     lerp(low, high, dz)
 }
 
 /// [`interpolate`] at run time: the same operations in the same order on
 /// four lanes at once (each corner's triple and the next table entry's
-/// first coefficient, which is dropped), so the same bits.
+/// first coefficient, which is dropped), so the same bits, and faster.
 #[inline(always)]
 pub(crate) fn interpolate_lanes(
     bytes: &[u8],
@@ -169,15 +181,9 @@ pub(crate) fn interpolate_lanes(
     case: usize,
     k: usize,
 ) -> [f32; 3] {
-    let z = rgb[case];
-    let scale = (n - 1) as f32 / z;
-    let (x, y) = (rgb[(case + 1) % 3] * scale, rgb[(case + 2) % 3] * scale);
-    let (xi, yi) = (index(x, n), index(y, n));
-    let (dx, dy) = (f32x4::splat(x - xi as f32), f32x4::splat(y - yi as f32));
-    let (z0, z1) = (nodes[k], nodes[k + 1]);
-    let dz = f32x4::splat((z - z0) / (z1 - z0));
-    let (row, slice) = (12 * n, 12 * n * n);
-    let at = HEADER_LEN + case * n * slice + k * slice + yi * row + 12 * xi;
+    let (first, [dx, dy, dz]) = corner(nodes, n, rgb, case, k);
+    let [dx, dy, dz] = [dx, dy, dz].map(f32x4::splat);
+    let (at, row, slice) = (HEADER_LEN + 12 * first, 12 * n, 12 * n * n);
     let load = |at: usize| {
         let b = bytes.get(at..).and_then(<[u8]>::first_chunk::<16>).copied().unwrap_or([0; 16]);
         f32x4::from(std::array::from_fn::<f32, 4, _>(|i| {
