@@ -264,7 +264,8 @@ mod tests {
     }
 
     fn tiny() -> Vec<u8> {
-        let header = Header { resolution: 2, matrix: [[2.0; 3]; 3], name: "tiny".into() };
+        let matrix = [[1.1, -0.3, 0.2], [0.25, 0.9, 1e-3], [0.07, -0.2, 1.05]];
+        let header = Header { resolution: 2, matrix, name: "tiny".into() };
         let mut bytes = encode_header(&header);
         bytes.extend((0..72).flat_map(|i| (i as f32).to_le_bytes()));
         finish(&mut bytes);
@@ -284,6 +285,8 @@ mod tests {
         };
         cases.push((b"PNG\x0d\x0a\x1a\x0a....".to_vec(), "expected an RGB table file"));
         cases.push((good[..64].to_vec(), "expected 136 bytes for its resolution, found 64"));
+        cases.push((MAGIC.to_vec(), "expected 136 bytes for its resolution, found 8"));
+        cases.push((good[..HEADER_LEN].to_vec(), "expected 424 bytes for its resolution, found 128"));
         cases.push((with(8, 2), "expected table format version 1, found version 2"));
         cases.push((with(12, 1), "expected a resolution from 2 to 256, found 1"));
         cases.push((with(12, 257), "found 257"));
@@ -320,9 +323,12 @@ mod tests {
         bad.truncate(n);
         finish(&mut bad);
         assert!(parse(&bad, "t").unwrap_err().to_string().contains("UTF-8"));
-        for (at, value) in
-            [(HEADER_LEN + 8, f32::NAN.to_le_bytes().to_vec()), (24, f64::INFINITY.to_le_bytes().to_vec())]
-        {
+        let cases = [
+            (HEADER_LEN + 8, f32::NAN.to_le_bytes().to_vec()),
+            (24, f64::INFINITY.to_le_bytes().to_vec()),
+            (40, f64::NAN.to_le_bytes().to_vec()),
+        ];
+        for (at, value) in cases {
             let mut bad = tiny();
             bad[at..at + value.len()].copy_from_slice(&value);
             bad.truncate(n);
@@ -330,11 +336,12 @@ mod tests {
             let e = parse(&bad, "t").unwrap_err();
             assert_eq!(e.kind, FileErrorKind::NonFinite { offset: at }, "{e}");
         }
-        let long = Header { resolution: 2, matrix: [[0.0; 3]; 3], name: "é".repeat(20) };
+        // 41 bytes: cut at 32, inside an "é", so at 31.
+        let long = Header { resolution: 2, matrix: [[0.0; 3]; 3], name: format!("a{}", "é".repeat(20)) };
         assert_eq!(encode_header(&long).len(), HEADER_LEN);
         let mut bytes = encode_header(&long);
         bytes.extend([0u8; 288]);
         finish(&mut bytes);
-        assert_eq!(parse(&bytes, "t").unwrap().name, "é".repeat(16));
+        assert_eq!(parse(&bytes, "t").unwrap().name, format!("a{}", "é".repeat(15)));
     }
 }
