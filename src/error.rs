@@ -190,7 +190,7 @@ impl fmt::Display for Error {
             Error::TableSpace { table, space } => write!(
                 f,
                 "expected a table fitted for the RGB space {space}, found one fitted for {table:?} \
-                 (another XYZ to RGB matrix or illuminant)"
+                 (another XYZ to RGB matrix, or an illuminant of another white)"
             ),
             Error::Primaries => write!(
                 f,

@@ -125,12 +125,10 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             }
             Long("space") => {
                 let v = parser.value()?.string()?;
-                let name = speclab_study::render::run::SPACES.iter().find(|s| s.eq_ignore_ascii_case(&v));
-                let name = name.ok_or_else(|| {
-                    format!(
-                        "expected an RGB space (sRGB, Display P3, Rec.2020, ACES2065-1, ACEScg), found {v:?}"
-                    )
-                })?;
+                let spaces = speclab_study::render::run::SPACES;
+                let name = spaces.iter().find(|s| s.eq_ignore_ascii_case(&v));
+                let name = name
+                    .ok_or_else(|| format!("expected an RGB space ({}), found {v:?}", spaces.join(", ")))?;
                 space = Some(*name);
             }
             Long("precision") => {

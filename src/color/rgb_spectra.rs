@@ -119,13 +119,13 @@ impl Spectrum for RgbUnbounded {
     /// Four lanes in `f32` at once, scaled.
     #[inline(always)]
     fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
-        self.poly.eval_many_f32(self.scale as f32, lambda, values);
+        self.poly.eval_many_f32(to_f32(self.scale), lambda, values);
     }
 
     /// As [`RgbUnbounded::eval_many_f32`].
     #[inline(always)]
     fn eval_many_nearest_f32(&self, lambda: &[f32], _nearest: &[u16], values: &mut [f32]) {
-        self.poly.eval_many_f32(self.scale as f32, lambda, values);
+        self.poly.eval_many_f32(to_f32(self.scale), lambda, values);
     }
 
     fn pieces(&self) -> Option<Pieces<'_>> {
@@ -191,7 +191,7 @@ impl Spectrum for RgbIlluminant {
             let mut light = [0.0f32; 8];
             let light = &mut light[..v.len()];
             self.illuminant.eval_many_nearest_f32(l, n, light);
-            self.poly.eval_many_f32(self.scale as f32, l, v);
+            self.poly.eval_many_f32(to_f32(self.scale), l, v);
             v.iter_mut().zip(light.iter()).for_each(|(v, e)| *v *= e);
         }
     }
@@ -232,6 +232,12 @@ impl RgbIlluminant {
     pub fn new(rgb: LinearSrgb) -> Self {
         RgbSpace::srgb().light(rgb)
     }
+}
+
+/// A scale in `f32`, at most `f32::MAX` (so a huge one times a value of 0
+/// stays 0).
+fn to_f32(scale: f64) -> f32 {
+    scale.min(f64::from(f32::MAX)) as f32
 }
 
 /// How an unbounded colour is split into a scale and an albedo.

@@ -214,7 +214,7 @@ impl Fit {
         // The flat spectrum of the colour's luminance has the white's colour
         // at that luminance: the path starts there, at constant Y.
         let y = target[1].clamp(1e-9, 1.0 - 1e-9);
-        ((self.white * y).to_array(), target, [0.0, 0.0, inverse_sigmoid(y)])
+        ((self.white * y).to_array(), target, constant(y).coefficients())
     }
 
     /// [`Fit::fit`]'s best coefficients for a colour that is not a grey,
@@ -315,10 +315,4 @@ const PROBE_STEPS: usize = 12;
 /// `a · b`.
 fn product(a: &Matrix, b: &Matrix) -> Matrix {
     std::array::from_fn(|r| std::array::from_fn(|c| (0..3).map(|k| a[r][k] * b[k][c]).sum()))
-}
-
-/// The x with `½ + x/(2√(1 + x²)) = s`, for s in (0, 1).
-fn inverse_sigmoid(s: f64) -> f64 {
-    let u = 2.0 * s - 1.0;
-    u / (1.0 - u * u).sqrt()
 }

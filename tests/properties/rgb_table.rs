@@ -34,7 +34,11 @@ fn node_colour(case: usize, k: usize, j: usize, i: usize, n: usize) -> LinearRgb
 /// or is refused.
 #[test]
 fn embedded_tables_are_the_fits_at_their_nodes() {
-    for space in RgbSpace::all() {
+    let embedded =
+        [RgbTable::SRGB, RgbTable::DISPLAY_P3, RgbTable::REC2020, RgbTable::ACES2065_1, RgbTable::ACESCG];
+    for (space, table) in RgbSpace::all().into_iter().zip(embedded) {
+        // The space uses its embedded table (a stale one would be refitted).
+        assert!(std::ptr::eq(space.table().as_bytes(), table.as_bytes()), "{}", space.name());
         assert_eq!(space.table().resolution(), RESOLUTION, "{}", space.name());
         assert!(space.table().header().name == space.name(), "{}: a built-in table", space.name());
         let colour = |albedo: &RgbAlbedo| space.xyz(space.rgb_of(albedo));
@@ -108,17 +112,43 @@ fn damaged_and_foreign_tables_are_refused() {
     assert_eq!(
         foreign.to_string(),
         "expected a table fitted for the RGB space Display P3, found one fitted for \"sRGB\" \
-         (another XYZ to RGB matrix or illuminant)"
+         (another XYZ to RGB matrix, or an illuminant of another white)"
     );
 }
 
-/// A `const` colour is the run-time lookup's, to the bit, over 2,000
-/// colours through the cube and at greys; out-of-range components are
-/// `None`, and so is a table fitted at run time.
+/// A `const` colour is the run-time lookup's, to the bit: 64 colours
+/// evaluated at compile time, and 2,000 through the cube and greys with
+/// the `const fn` called at run time (its scalar form against the lookup's
+/// four lanes); out-of-range components are `None`, and so is a table
+/// fitted at run time.
 #[test]
 fn const_colours_are_run_time_colours() {
     const RED: Option<RgbAlbedo> = RgbTable::SRGB.const_albedo([0.8, 0.1, 0.05]);
     assert_eq!(RED, Some(RgbSpace::srgb().albedo(LinearRgb::new(0.8, 0.1, 0.05)).unwrap()));
+    // 64 colours looked up at compile time (two of each three with two
+    // equal components), against the same at run time.
+    const fn colour(i: usize) -> [f32; 3] {
+        let v = (i as f32 * 0.618_034) % 1.0;
+        let w = (v * 3.7) % 1.0;
+        match i % 3 {
+            0 => [v, w, (v * 7.3) % 1.0],
+            1 => [v, v, w],
+            _ => [w, v, v],
+        }
+    }
+    const LOOKED_UP: [Option<RgbAlbedo>; 64] = {
+        let mut out = [None; 64];
+        let mut i = 0;
+        while i < 64 {
+            out[i] = RgbTable::SRGB.const_albedo(colour(i));
+            i += 1;
+        }
+        out
+    };
+    for (i, looked_up) in LOOKED_UP.iter().enumerate() {
+        let run_time = RgbSpace::srgb().albedo(LinearRgb::from(colour(i).map(f64::from))).unwrap();
+        assert_eq!(*looked_up, Some(run_time), "{:?}", colour(i));
+    }
     for i in 0..2000 {
         let v = (f64::from(i) * 0.618_033_988_7).fract();
         let rgb = [v, (v * 3.7).fract(), (v * 7.3).fract()].map(|c| c as f32);
@@ -138,21 +168,34 @@ fn const_colours_are_run_time_colours() {
     assert_eq!(RgbTable::fit(RgbSpace::srgb(), 2).const_albedo([0.5, 0.2, 0.1]), None);
 }
 
-/// Clones of a space share its table: the same bytes at the same address.
+/// Clones of a space share its table: one given, one embedded, and one
+/// fitted on first use after the space was cloned (seconds: 64³ fits).
 #[test]
 fn clones_share_one_table() {
-    let space = RgbSpace::new(
-        "mine",
-        RgbSpace::srgb().primaries(),
-        RgbSpace::srgb().white_point(),
-        RgbSpace::srgb().illuminant(),
-    )
-    .unwrap();
-    let space = space.with_table(RgbTable::fit(RgbSpace::srgb(), 4)).unwrap();
-    let clone = space.clone();
-    assert!(std::ptr::eq(space.table().as_bytes(), clone.table().as_bytes()));
-    let srgb = RgbSpace::srgb().clone();
-    assert!(std::ptr::eq(srgb.table().as_bytes(), RgbTable::SRGB.as_bytes()));
+    let srgb = RgbSpace::srgb();
+    let mine = RgbSpace::new("mine", srgb.primaries(), srgb.white_point(), srgb.illuminant()).unwrap();
+    let given = mine.clone().with_table(RgbTable::fit(srgb, 4)).unwrap();
+    assert!(std::ptr::eq(given.table().as_bytes(), given.clone().table().as_bytes()));
+    assert!(std::ptr::eq(srgb.clone().table().as_bytes(), RgbTable::SRGB.as_bytes()));
+    let clone = mine.clone();
+    let fitted = mine.table();
+    assert_eq!(fitted.resolution(), RESOLUTION);
+    assert!(std::ptr::eq(fitted.as_bytes(), clone.table().as_bytes()), "the clone fitted its own");
+}
+
+/// Components so small that `1/z` overflows in `f32` (and 0 in `f32`):
+/// finite albedos, at run time and compile time.
+#[test]
+fn tiny_components_give_finite_albedos() {
+    for rgb in [[1e-38, 0.0, 0.0], [1e-40, 1e-41, 0.0], [3e-39, 1e-39, 2e-39], [1e-50, 0.0, 0.0]] {
+        let albedo = RgbSpace::srgb().albedo(LinearRgb::from(rgb)).unwrap();
+        assert!(albedo.polynomial().coefficients().iter().all(|c| !c.is_nan()), "{rgb:?}: {albedo:?}");
+        assert!((0.0..=1e-6).contains(&albedo.eval(550.0)), "{rgb:?}: {}", albedo.eval(550.0));
+        let at_compile_time = RgbTable::SRGB.const_albedo(rgb.map(|v| v as f32)).unwrap();
+        assert!(at_compile_time.polynomial().coefficients().iter().all(|c| !c.is_nan()), "{rgb:?}");
+    }
+    let bright = RgbSpace::srgb().unbounded_up_to_one(LinearRgb::new(1e-39, 0.0, 0.0));
+    assert!(bright.eval(600.0).is_finite());
 }
 
 /// "1 up to 1": inside the cube a colour is its albedo at scale 1; beyond,
@@ -185,12 +228,12 @@ fn unbounded_up_to_one_and_twice() {
 
 /// The RGB spectra's `f32` lanes (a hero sample's, and behind a `Box<dyn
 /// Spectrum>`) against their `f64` values: within the `f32` polynomial's
-/// rounding, `4ε·(1 + Σ|cᵢ|)` relatively (the illuminant's own `f32`
-/// rounding beside it for a light).
+/// rounding, `4ε·(2 + Σ|cᵢ|)` relatively, `cᵢ` the unbounded colour's
+/// coefficients (the albedo is the same colour; one more ε for the
+/// scale, and for the light the illuminant's own `f32` rounding).
 #[test]
 fn rgb_spectra_sample_in_f32_lanes() {
     use speclab::HeroSample;
-    use speclab::spectrum::Wavelengths;
     let space = RgbSpace::acescg();
     let rgb = LinearRgb::new(2.0, 0.7, 0.3);
     let spectra: [Box<dyn Spectrum>; 3] = [

@@ -15,15 +15,14 @@
 
 #![no_std]
 
-/// The length of each file: 128 bytes of header, `3 · 64³` coefficient
-/// triples of `f32`, 8 of checksum.
-pub const LEN: usize = 128 + 12 * 3 * 64 * 64 * 64 + 8;
-
 /// Display P3's table file.
-pub static DISPLAY_P3: [u8; LEN] = *include_bytes!("../data/display-p3.rgbt");
+pub static DISPLAY_P3: [u8; include_bytes!("../data/display-p3.rgbt").len()] =
+    *include_bytes!("../data/display-p3.rgbt");
 /// Rec.2020's table file.
-pub static REC2020: [u8; LEN] = *include_bytes!("../data/rec2020.rgbt");
+pub static REC2020: [u8; include_bytes!("../data/rec2020.rgbt").len()] =
+    *include_bytes!("../data/rec2020.rgbt");
 /// ACES2065-1's table file.
-pub static ACES2065_1: [u8; LEN] = *include_bytes!("../data/aces2065-1.rgbt");
+pub static ACES2065_1: [u8; include_bytes!("../data/aces2065-1.rgbt").len()] =
+    *include_bytes!("../data/aces2065-1.rgbt");
 /// ACEScg's table file.
-pub static ACESCG: [u8; LEN] = *include_bytes!("../data/acescg.rgbt");
+pub static ACESCG: [u8; include_bytes!("../data/acescg.rgbt").len()] = *include_bytes!("../data/acescg.rgbt");

@@ -23,6 +23,9 @@ use crate::spectrum::SigmoidPolynomial;
 /// `f64`, then rounded: the fits are made at exactly these values).
 #[must_use]
 pub const fn node(k: usize, n: usize) -> f32 {
+    if n < 2 || k >= n {
+        return if k == 0 { 0.0 } else { 1.0 };
+    }
     let t = k as f64 / (n - 1) as f64;
     let s = t * t * (3.0 - 2.0 * t);
     (s * s * (3.0 - 2.0 * s)) as f32
@@ -56,8 +59,8 @@ const fn settle(z: f32, guess: usize, nodes: &[f32; MAX_NODES], n: usize) -> usi
     k
 }
 
-/// [`settle`]'s interval found by walking the nodes: for `const`
-/// contexts, which have no square root.
+/// [`settle`]'s interval found by walking the nodes: what the guesses are
+/// made of (and tested against).
 pub(crate) const fn interval_walked(z: f32, nodes: &[f32; MAX_NODES], n: usize) -> usize {
     let mut k = 0;
     while k < n - 2 && z >= nodes[k + 1] {
@@ -145,9 +148,9 @@ const fn corner(
     case: usize,
     k: usize,
 ) -> (usize, [f32; 3]) {
-    let z = rgb[case];
-    let scale = (n - 1) as f32 / z;
-    let (x, y) = (rgb[(case + 1) % 3] * scale, rgb[(case + 2) % 3] * scale);
+    let (z, last) = (rgb[case], (n - 1) as f32);
+    // Each ratio first (at most 1): `last / z` overflows for z below 1e-37.
+    let (x, y) = (rgb[(case + 1) % 3] / z * last, rgb[(case + 2) % 3] / z * last);
     let (xi, yi) = (index(x, n), index(y, n));
     let (z0, z1) = (nodes[k], nodes[k + 1]);
     (((case * n + k) * n + yi) * n + xi, [x - xi as f32, y - yi as f32, (z - z0) / (z1 - z0)])
@@ -270,7 +273,7 @@ mod tests {
     /// node, the floats next to it on each side, and a sweep of 100,000
     /// values, from 2 nodes to 256.
     #[test]
-    fn the_interval_by_roots_is_the_interval_by_walking() {
+    fn the_interval_by_guesses_is_the_interval_by_walking() {
         for n in [2, 3, 8, 64, 256] {
             let mut zs: Vec<f32> = (0..100_000).map(|i| (i as f32 + 0.5) / 100_000.0).collect();
             for k in 1..n {

@@ -1,10 +1,11 @@
 //! Fits the built-in RGB spaces' tables and writes them as table files,
-//! which speclab embeds at build time (`data/rgb/`, and the wide-gamut
-//! spaces' in `rgb-tables/data/`). Run it when the fit or a space
-//! changes; the tests then hold the embedded tables against fresh fits.
+//! where speclab embeds them at build time: sRGB's in `data/rgb/`, the
+//! wide-gamut spaces' in `wide-gamut/data/`. Run it from the workspace's
+//! root when the fit or a space changes; the tests then hold the embedded
+//! tables against fresh fits.
 //!
 //! ```text
-//! cargo run --release -p speclab-tools --bin rgb-tables                 # every space, into data/rgb
+//! cargo run --release -p speclab-tools --bin rgb-tables                 # every space, where it is embedded
 //! cargo run --release -p speclab-tools --bin rgb-tables -- --space sRGB --out target/rgb
 //! ```
 
@@ -18,7 +19,8 @@ use speclab::color::space::RgbSpace;
 const USAGE: &str = "\
 usage: rgb-tables [--space NAME]... [--out DIR] [--resolution N]
   --space NAME     a built-in space (sRGB, Display P3, Rec.2020, ACES2065-1, ACEScg); default all
-  --out DIR        where <space>.rgbt goes (default data/rgb)
+  --out DIR        where <space>.rgbt goes (default: where it is embedded,
+                   data/rgb for sRGB and wide-gamut/data for the others)
   --resolution N   nodes per axis, 2 to 256 (default 64)";
 
 /// The file stem of a space's table: `sRGB` → `srgb`, `Display P3` →
@@ -27,14 +29,19 @@ fn stem(name: &str) -> String {
     name.to_lowercase().replace(' ', "-").replace('.', "")
 }
 
-fn parse_args() -> Result<(Vec<String>, PathBuf, usize), lexopt::Error> {
+/// Where a built-in space's table is embedded from.
+fn embedded_folder(name: &str) -> PathBuf {
+    PathBuf::from(if name == "sRGB" { "data/rgb" } else { "wide-gamut/data" })
+}
+
+fn parse_args() -> Result<(Vec<String>, Option<PathBuf>, usize), lexopt::Error> {
     use lexopt::prelude::*;
-    let (mut spaces, mut out, mut n) = (Vec::new(), PathBuf::from("data/rgb"), RESOLUTION);
+    let (mut spaces, mut out, mut n) = (Vec::new(), None, RESOLUTION);
     let mut parser = lexopt::Parser::from_env();
     while let Some(arg) = parser.next()? {
         match arg {
             Long("space") => spaces.push(parser.value()?.string()?),
-            Long("out") => out = parser.value()?.into(),
+            Long("out") => out = Some(parser.value()?.into()),
             Long("resolution") => n = parser.value()?.parse()?,
             Short('h') | Long("help") => {
                 println!("{USAGE}");
@@ -62,18 +69,19 @@ fn main() -> ExitCode {
         eprintln!("rgb-tables: expected built-in space names, found {names:?}\n{USAGE}");
         return ExitCode::from(2);
     }
-    if let Err(e) = std::fs::create_dir_all(&out) {
-        eprintln!("rgb-tables: {}: cannot create: {e}", out.display());
-        return ExitCode::FAILURE;
-    }
     for space in chosen {
+        let folder = out.clone().unwrap_or_else(|| embedded_folder(space.name()));
+        if let Err(e) = std::fs::create_dir_all(&folder) {
+            eprintln!("rgb-tables: {}: cannot create: {e}", folder.display());
+            return ExitCode::FAILURE;
+        }
         // A fresh space of the same definition: the built-in one may carry
         // the very table being remade.
         let fresh = RgbSpace::new(space.name(), space.primaries(), space.white_point(), space.illuminant())
             .expect("a built-in space's definition");
         let start = Instant::now();
         let table = RgbTable::fit(&fresh, n);
-        let path = out.join(format!("{}.rgbt", stem(space.name())));
+        let path = folder.join(format!("{}.rgbt", stem(space.name())));
         let written = table.save(&path).and_then(|()| RgbTable::load(&path));
         match written {
             Ok(back) if back == table => println!(
