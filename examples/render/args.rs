@@ -159,6 +159,9 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
         }
         a.options.rgb_space = Some(name);
     }
+    if a.options.rgb_space.is_some() && a.options.way != Way::Hero {
+        return Err("expected --wavelengths hero with --spectra rgb (the textured scene is hero's)".into());
+    }
     if a.options.width.saturating_mul(a.options.height) > 1 << 24 {
         return Err("expected at most 16 M pixels".into());
     }

@@ -76,8 +76,16 @@ fn saved_tables_load_back_bit_for_bit() {
         table.save(&path).unwrap();
         let back = RgbTable::load(&path).unwrap();
         assert_eq!(back.as_bytes(), table.as_bytes(), "{name}");
+        assert_eq!(&back, table, "{name}");
         assert_eq!(back.resolution(), table.resolution());
     }
+    assert_ne!(&fitted, RgbTable::SRGB);
+    // Debug names the kind and size, not 9.4 MB of bytes.
+    assert_eq!(
+        format!("{:?}", RgbTable::SRGB),
+        "RgbTable { resolution: 64, bytes: 9437320, kind: \"built in\" }"
+    );
+    assert!(format!("{fitted:?}").ends_with("kind: \"shared\" }"), "{fitted:?}");
     let rgb = LinearRgb::new(0.7, 0.2, 0.4);
     let space =
         RgbSpace::srgb().clone().with_table(RgbTable::load(dir.join("fitted.rgbt")).unwrap()).unwrap();
