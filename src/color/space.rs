@@ -270,21 +270,29 @@ impl RgbSpace {
     /// illuminant, within 1e-9 of the space's: an illuminant of the same
     /// white but another spectrum is not told apart).
     pub fn with_table(mut self, table: RgbTable) -> Result<RgbSpace, Error> {
-        let header = table.header();
-        let mut same = header.matrix.iter().flatten().zip(self.fit.to_rgb.iter().flatten());
-        if !same.all(|(a, b)| (a - b).abs() <= 1e-9 * b.abs().max(1.0)) {
-            return Err(Error::TableSpace { table: header.name, space: self.name });
+        if !self.fitted_for(&table) {
+            return Err(Error::TableSpace { table: table.header().name, space: self.name });
         }
         self.table = Arc::new(OnceLock::from(table));
         Ok(self)
     }
 
+    /// Whether `table` was fitted for this space: its matrix within 1e-9
+    /// of the space's balanced one.
+    fn fitted_for(&self, table: &RgbTable) -> bool {
+        let matrix = table.header().matrix;
+        let mut same = matrix.iter().flatten().zip(self.fit.to_rgb.iter().flatten());
+        same.all(|(a, b)| (a - b).abs() <= 1e-9 * b.abs().max(1.0))
+    }
+
     /// A built-in space with its embedded table; were the table stale
     /// (fitted for other matrices), the space would fit its own on first
     /// use instead, and `tests/properties/rgb_table.rs` fails.
-    fn with_built_in(self, table: RgbTable) -> RgbSpace {
-        let fallback = self.clone();
-        self.with_table(table).unwrap_or(fallback)
+    fn with_built_in(mut self, table: RgbTable) -> RgbSpace {
+        if self.fitted_for(&table) {
+            self.table = Arc::new(OnceLock::from(table));
+        }
+        self
     }
 
     /// The reflectance whose colour under the space's illuminant is `rgb`
