@@ -11,7 +11,7 @@ use std::io;
 use std::process::ExitCode;
 
 use speclab::Role;
-use speclab::color::{Display, Exposure, GamutMap};
+use speclab::color::{Exposure, GamutMap, PixelPipeline};
 use speclab_cli::args::{self, fail, finish};
 use speclab_cli::report;
 use speclab_study::StudyError;
@@ -95,7 +95,7 @@ fn main() -> ExitCode {
     match run(&args) {
         Ok((light, surface, lines)) => {
             let white = args.settings.viewing.white(&light.spectrum);
-            let swatches = args::color().then(|| Display::new(Exposure::fit_white(white), args.gamut));
+            let swatches = args::color().then(|| PixelPipeline::new(Exposure::fit_white(white), args.gamut));
             let out = &mut io::stdout().lock();
             let written =
                 report::compare_table(out, &light.name, &surface.name, &args.settings, &lines, swatches);

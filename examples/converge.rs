@@ -13,13 +13,13 @@ use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
 use speclab::Role;
-use speclab::sampling::choice::{PdfKind, Sampling};
-use speclab::sampling::strata::Strata;
 use speclab_cli::args::{self, fail, finish};
 use speclab_cli::report;
 use speclab_study::StudyError;
 use speclab_study::evaluate::scene::{self, Choice, Depth};
 use speclab_study::experiments::convergence;
+use speclab_study::sampling::choice::{PdfKind, Sampling};
+use speclab_study::sampling::strata::Strata;
 
 const USAGE: &str = "\
 usage: converge [--light NAME] [--surface NAME] [--trials T] [--seed S] [--depth D] [--all] [--csv] [--summary]

@@ -14,10 +14,10 @@
 //!   rule fitted to the scene's lights; no pdf), and the `M` buckets of a
 //!   [`RegularSpectrum<M>`];
 //! - the values at them: [`SampledSpectrum<K>`] or the buckets' values,
-//!   turned into [`Xyz`] and [`LinearSrgb`] ([`color`]).
+//!   turned into [`Xyz`] and [`LinearRgb`] ([`color`]).
 //!
 //! Floors, each using only those below it: [`error`] and [`spectrum`] →
-//! [`color`] → [`sampling`] → [`io`] and [`carry`] (`ARCHITECTURE.md`).
+//! [`color`] → [`sampling`] → [`io`] (`ARCHITECTURE.md`).
 //! Spectra are read by [`io`] at run time, or turned into static data at
 //! compile time by the `speclab-tables` crate (the built-in data, [`data`],
 //! is made so). This crate is the renderer's core: its dependencies are
@@ -115,7 +115,6 @@ mod doc_pages {
     pub struct Textures;
 }
 
-pub mod carry;
 pub mod color;
 pub mod error;
 pub mod io;
@@ -138,16 +137,9 @@ pub mod __codegen {
     }
 }
 
-#[allow(deprecated)]
-pub use sampling::Centre;
-#[allow(deprecated)]
-pub use spectrum::WIDTH;
-
-pub use color::{LinearSrgb, Xyz};
+pub use color::{LinearRgb, Xyz};
 pub use error::Error;
 pub use rand;
-#[allow(deprecated)]
-pub use sampling::SampledWavelengths;
 pub use sampling::{BoxAverage, Center, FixedWavelengths, HeroSample, RegularSpectrum};
 pub use spectrum::{
     Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Role, SampledSpectrum, Spectrum, TabulatedSpectrum,

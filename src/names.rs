@@ -38,14 +38,6 @@ macro_rules! named_choices {
             /// Every name, in the order of [`Self::ALL`].
             pub const NAMES: &'static [&'static str] = &[$($name),+];
         }
-        impl $ty {
-            /// The choice with this name, in any case.
-            #[deprecated(since = "0.2.0", note = "use `str::parse`")]
-            #[must_use]
-            pub fn from_name(name: &str) -> Option<Self> {
-                name.parse().ok()
-            }
-        }
         impl ::std::str::FromStr for $ty {
             type Err = $crate::error::Error;
             /// The choice with this name, in any case.

@@ -13,8 +13,8 @@ use std::io::{self, IsTerminal};
 use std::num::NonZeroUsize;
 use std::process::ExitCode;
 
-use speclab::sampling::hero::MAX_WIDTH;
 use speclab::sampling::rule::MAX_M;
+use speclab_study::sampling::estimate::MAX_WIDTH;
 
 /// The built-in names, for help texts: every light and surface, read from
 /// the library's lists.

@@ -27,8 +27,8 @@ pub use plan::plan_text;
 pub use rules::{depth_table, needs_table, rules_table};
 pub use texture::texture_table;
 
-use speclab::color::display::{Display, Exposure, GamutMap, Srgb8};
-use speclab::color::{LinearSrgb, Xyz};
+use speclab::color::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
+use speclab::color::{LinearRgb, Xyz};
 use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::perceptual;
 use speclab_study::evaluate::scene::Depth;
@@ -102,7 +102,7 @@ pub fn grid_table(
             writeln!(out, "{pad}{a:<5} {b:<15} {c:>10} {d:>10} {e:>10}  {f:>9} {g:>7} {i:>7}")?;
         }
         let white = viewing.white(&light.spectrum);
-        let display = swatches.map(|gamut| Display::new(Exposure::fit_white(white), gamut));
+        let display = swatches.map(|gamut| PixelPipeline::new(Exposure::fit_white(white), gamut));
         let reference = cell.iter().find(|r| r.method == Method::Reference).map(|r| r.xyz);
         let reference = reference.map(|x| viewing.adapt(x, &light.spectrum));
         for row in cell {
@@ -121,7 +121,7 @@ fn grid_line(
     xyz: Xyz,
     reference: Option<Xyz>,
     white: Xyz,
-    display: Option<Display>,
+    display: Option<PixelPipeline>,
 ) -> io::Result<()> {
     let rgb = xyz.to_linear_srgb();
     let patch = if row.method == Method::Reference { row.surface.name.as_str() } else { "" };
@@ -134,7 +134,7 @@ fn grid_line(
             let exact_rgb = exact.to_linear_srgb();
             let d = rgb.distance(exact_rgb);
             let de = perceptual::delta_e00(xyz, exact, white);
-            writeln!(out, " {d:>9.3} {:>7} {de:>7.2}", share(d, exact_rgb.distance(LinearSrgb::default())))
+            writeln!(out, " {d:>9.3} {:>7} {de:>7.2}", share(d, exact_rgb.distance(LinearRgb::default())))
         }
         None => writeln!(out),
     }
@@ -292,7 +292,7 @@ pub fn compare_table(
     surface: &str,
     s: &CompareOptions,
     lines: &[Line],
-    swatches: Option<Display>,
+    swatches: Option<PixelPipeline>,
 ) -> io::Result<()> {
     let balance = if s.viewing.white_balance { "Bradford to D65" } else { "off" };
     let normalize = s.viewing.normalize;
@@ -324,7 +324,7 @@ pub fn compare_table(
     )?;
     for l in lines {
         let gamut = if l.rgb.in_gamut() { "in" } else { "OUT" };
-        let LinearSrgb { r, g, b } = l.rgb;
+        let LinearRgb { r, g, b } = l.rgb;
         let swatch = swatches.map_or_else(String::new, |d| swatch(d.pixel(l.rgb)));
         writeln!(
             out,

@@ -6,9 +6,9 @@
 
 use std::num::NonZeroUsize;
 
-use speclab::LinearSrgb;
+use speclab::LinearRgb;
 use speclab::color::display::EncodedSrgb;
-use speclab::color::display::{Display, Exposure, GamutMap, Srgb8};
+use speclab::color::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use speclab::sampling::reference;
 use speclab_cli::png as png_file;
 use speclab_cli::png::Image;
@@ -57,7 +57,8 @@ fn tiny_sheet_png_has_the_layout_size_and_the_exact_colours() {
     let image = decode(&bytes);
     assert_eq!((image.width, image.height), (layout.width(), layout.height()));
     for (l, light) in lights.iter().enumerate() {
-        let display = Display::new(Exposure::fit_white(reference::white(&light.spectrum)), GamutMap::Chroma);
+        let display =
+            PixelPipeline::new(Exposure::fit_white(reference::white(&light.spectrum)), GamutMap::Chroma);
         for (p, patch) in patches.iter().enumerate() {
             let exact = display.pixel(reference::xyz(&light.spectrum, &patch.spectrum).to_linear_srgb());
             assert!(
@@ -93,14 +94,14 @@ fn every_monte_carlo_pixel_is_its_own_estimate() {
     let factor = Exposure::fit_white(reference::white(light)).factor();
     let exact = reference::xyz(light, patch).to_linear_srgb() * factor;
     for column in [1, 2, 5, 6] {
-        let pixels: Vec<LinearSrgb> =
+        let pixels: Vec<LinearRgb> =
             swatches.swatch(0, 0, column).iter().map(|p| p.to_encoded().decode()).collect();
         let count = pixels.len() as f64;
-        let mean = pixels.iter().copied().sum::<LinearSrgb>() / count;
-        let var = pixels.iter().map(|&p| (p - mean) * (p - mean)).sum::<LinearSrgb>() / (count - 1.0);
+        let mean = pixels.iter().copied().sum::<LinearRgb>() / count;
+        let var = pixels.iter().map(|&p| (p - mean) * (p - mean)).sum::<LinearRgb>() / (count - 1.0);
         for ((m, v), x) in mean.to_array().into_iter().zip(var.to_array()).zip(exact.to_array()) {
             let half_step = |x: f64| {
-                let code = EncodedSrgb::encode(LinearSrgb::splat(x)).r;
+                let code = EncodedSrgb::encode(LinearRgb::splat(x)).r;
                 EncodedSrgb { r: code + 0.5 / 255.0, g: 0.0, b: 0.0 }.decode().r - x
             };
             let bound = 4.0 * (v / count).sqrt() + half_step(x);

@@ -23,7 +23,7 @@ mod output;
 use std::process::ExitCode;
 
 use args::Args;
-use speclab::carry::Carry;
+use speclab_study::carry::Carry;
 use speclab_study::render::run::{self, WithCarry, with_carry};
 use speclab_study::render::{Render, Setup, render};
 

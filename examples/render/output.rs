@@ -5,10 +5,9 @@
 use std::io::Write;
 use std::path::Path;
 
-use speclab::color::{Display, Exposure, GamutMap};
+use speclab::color::{Exposure, GamutMap, PixelPipeline};
 use speclab::data::lights;
 use speclab::io::Load;
-use speclab::sampling::choice::PdfKind;
 use speclab::{Role, Xyz};
 use speclab_cli::png::{self, Image};
 use speclab_cli::progress;
@@ -16,6 +15,7 @@ use speclab_study::evaluate::Named;
 use speclab_study::render::run::{Timed, delta_e, display_white, exact_cost};
 use speclab_study::render::survey::{self, FITTED_M, HERO_SPP, Measured, Row};
 use speclab_study::render::{Options, Render, Setup, Way};
+use speclab_study::sampling::choice::PdfKind;
 
 use crate::args::Args;
 
@@ -77,7 +77,7 @@ pub fn exact_report(o: &Options, setup: &Setup, with_exact: &Render, seconds: f6
 /// 8-bit sRGB of `xyz` through `color::display` (exposed to the display
 /// white of `exposed_by`, chroma-reduced into the gamut).
 pub fn srgb8(xyz: &[Xyz], white: Xyz, exposed_by: &[Xyz]) -> Vec<u8> {
-    let display = Display::new(Exposure::fit_white(display_white(exposed_by, white)), GamutMap::Chroma);
+    let display = PixelPipeline::new(Exposure::fit_white(display_white(exposed_by, white)), GamutMap::Chroma);
     xyz.iter().flat_map(|p| display.pixel(p.to_linear_srgb()).to_array()).collect()
 }
 

@@ -1,4 +1,4 @@
-//! Display: from a colour's numbers to the pixel a screen shows, in three
+//! From a colour's numbers to the pixel a screen shows, in three
 //! small steps that renderers and the study's pictures share.
 //!
 //! 1. **Exposure** ([`Exposure`]): scale linear sRGB so that the perfect
@@ -13,19 +13,19 @@
 //! 3. **Encoding** ([`EncodedSrgb`]): the IEC 61966-2-1 transfer function
 //!    ([`srgb::encode`]), then quantisation to 8 bits ([`Srgb8`]).
 //!
-//! [`Display`] runs the three for one pixel. Gamut mapping is for pixels
-//! only: the numbers the study prints stay unclamped [`LinearSrgb`], with
+//! [`PixelPipeline`] runs the three for one pixel. Gamut mapping is for pixels
+//! only: the numbers the study prints stay unclamped [`LinearRgb`], with
 //! their negatives. Units: linear sRGB is relative to the display white
 //! `(1, 1, 1)`, encoded values are fractions of full scale. Every function
 //! here takes any `f64` (NaN, infinities, negatives) and gives a defined
 //! pixel; none allocates.
 //!
 //! ```
-//! use speclab::color::display::{Display, Exposure, GamutMap, Srgb8};
+//! use speclab::color::display::{PixelPipeline, Exposure, GamutMap, Srgb8};
 //! use speclab::{data, sampling::reference};
 //! let white = reference::white(&data::lights::D65);
 //! let g4 = reference::xyz(&data::lights::D65, &data::patches::G4).to_linear_srgb(); // red; green < 0
-//! let display = Display::new(Exposure::for_white(white), GamutMap::Chroma);
+//! let display = PixelPipeline::new(Exposure::for_white(white), GamutMap::Chroma);
 //! let Srgb8 { r, g, b } = display.pixel(g4);
 //! assert_eq!(g, 0); // on the gamut's edge: desaturated just enough
 //! assert!(r > b && b > 0);
@@ -37,22 +37,23 @@
 //!
 //! ```compile_fail
 //! use speclab::color::display::EncodedSrgb;
-//! use speclab::LinearSrgb;
-//! let linear = LinearSrgb::new(0.2, 0.4, 0.6);
+//! use speclab::LinearRgb;
+//! let linear = LinearRgb::new(0.2, 0.4, 0.6);
 //! let encoded = EncodedSrgb::encode(linear);
-//! let _ = linear.distance(encoded); // expected `LinearSrgb`, found `EncodedSrgb`
+//! let _ = linear.distance(encoded); // expected `LinearRgb`, found `EncodedSrgb`
 //! ```
 //!
 //! Decoding first says what is meant, and compiles:
 //!
 //! ```
-//! # use speclab::{LinearSrgb, color::display::EncodedSrgb};
-//! let linear = LinearSrgb::new(0.2, 0.4, 0.6);
+//! # use speclab::{LinearRgb, color::display::EncodedSrgb};
+//! let linear = LinearRgb::new(0.2, 0.4, 0.6);
 //! let encoded = EncodedSrgb::encode(linear);
 //! assert!(linear.distance(encoded.decode()) < 1e-12);
 //! ```
 
-use crate::color::srgb::{self, LinearSrgb, SRGB_TO_XYZ};
+use crate::color::rgb::LinearRgb;
+use crate::color::srgb::{self, SRGB_TO_XYZ};
 use crate::color::xyz::Xyz;
 use crate::named_choices;
 
@@ -102,7 +103,7 @@ impl Exposure {
     /// gamut map handles them).
     #[inline]
     #[must_use]
-    pub fn apply(self, rgb: LinearSrgb) -> LinearSrgb {
+    pub fn apply(self, rgb: LinearRgb) -> LinearRgb {
         rgb * self.factor
     }
 }
@@ -123,7 +124,7 @@ impl GamutMap {
     /// `rgb` mapped into [0, 1]³.
     #[inline]
     #[must_use]
-    pub fn apply(self, rgb: LinearSrgb) -> LinearSrgb {
+    pub fn apply(self, rgb: LinearRgb) -> LinearRgb {
         match self {
             GamutMap::Clip => clip(rgb),
             GamutMap::Chroma => reduce_chroma(rgb),
@@ -134,10 +135,10 @@ impl GamutMap {
 /// Each channel clamped to [0, 1]; NaN gives 0.
 #[inline]
 #[must_use]
-pub fn clip(rgb: LinearSrgb) -> LinearSrgb {
+pub fn clip(rgb: LinearRgb) -> LinearRgb {
     // The comparison is false for NaN, hence 0.
     let c = |v: f64| if v > 0.0 { v.min(1.0) } else { 0.0 };
-    LinearSrgb::new(c(rgb.r), c(rgb.g), c(rgb.b))
+    LinearRgb::new(c(rgb.r), c(rgb.g), c(rgb.b))
 }
 
 /// Luminance of the display white `(1, 1, 1)`: 0.99991 by the part D
@@ -149,7 +150,7 @@ pub const WHITE_LUMINANCE: f64 = SRGB_TO_XYZ[1][0] + SRGB_TO_XYZ[1][1] + SRGB_TO
 /// luminance, `g·(1, 1, 1)` with `g = Y / Y_white`, just until every
 /// channel lies in [0, 1]. Colours inside the cube are returned unchanged.
 ///
-/// - **Luminance** `Y` ([`LinearSrgb::luminance`]) is kept, because the
+/// - **Luminance** `Y` ([`LinearRgb::luminance`]) is kept, because the
 ///   luminance is linear and the grey has the same: to 1e-12 for components
 ///   up to 10³ in magnitude (rounding only).
 /// - **Hue** is kept: a mixture of a colour and a grey lies on the straight
@@ -161,7 +162,7 @@ pub const WHITE_LUMINANCE: f64 = SRGB_TO_XYZ[1][0] + SRGB_TO_XYZ[1][1] + SRGB_TO
 ///   luminances inside the cube.
 /// - A non-finite component has no hue: such a colour is [`clip`]ped.
 #[must_use]
-pub fn reduce_chroma(rgb: LinearSrgb) -> LinearSrgb {
+pub fn reduce_chroma(rgb: LinearRgb) -> LinearRgb {
     let c = rgb.to_array();
     if !c.iter().all(|v| v.is_finite()) {
         return clip(rgb);
@@ -169,12 +170,12 @@ pub fn reduce_chroma(rgb: LinearSrgb) -> LinearSrgb {
     if c.iter().all(|v| (0.0..=1.0).contains(v)) {
         return rgb;
     }
-    let y = rgb.luminance();
+    let y = srgb::luminance(rgb);
     if y <= 0.0 {
-        return LinearSrgb::new(0.0, 0.0, 0.0);
+        return LinearRgb::new(0.0, 0.0, 0.0);
     }
     if y >= WHITE_LUMINANCE {
-        return LinearSrgb::new(1.0, 1.0, 1.0);
+        return LinearRgb::new(1.0, 1.0, 1.0);
     }
     let grey = y / WHITE_LUMINANCE;
     // The largest t in [0, 1] that keeps grey + t·(c − grey) in [0, 1]³.
@@ -190,12 +191,12 @@ pub fn reduce_chroma(rgb: LinearSrgb) -> LinearSrgb {
     });
     // Clamped only against rounding, by at most a few units in the last place.
     let mix = |v: f64| (grey + t * (v - grey)).clamp(0.0, 1.0);
-    LinearSrgb::new(mix(rgb.r), mix(rgb.g), mix(rgb.b))
+    LinearRgb::new(mix(rgb.r), mix(rgb.g), mix(rgb.b))
 }
 
 /// sRGB encoded by the IEC 61966-2-1 transfer function: what a display
 /// expects, each component in [0, 1]. A different type from
-/// [`LinearSrgb`], so the two cannot be mixed.
+/// [`LinearRgb`], so the two cannot be mixed.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct EncodedSrgb {
     /// Red, encoded.
@@ -212,15 +213,15 @@ impl EncodedSrgb {
     /// choose how.
     #[inline]
     #[must_use]
-    pub fn encode(rgb: LinearSrgb) -> EncodedSrgb {
+    pub fn encode(rgb: LinearRgb) -> EncodedSrgb {
         EncodedSrgb { r: srgb::encode(rgb.r), g: srgb::encode(rgb.g), b: srgb::encode(rgb.b) }
     }
 
     /// Back to linear with [`srgb::decode`] (clamped to [0, 1]; NaN gives 0).
     #[inline]
     #[must_use]
-    pub fn decode(self) -> LinearSrgb {
-        LinearSrgb::new(srgb::decode(self.r), srgb::decode(self.g), srgb::decode(self.b))
+    pub fn decode(self) -> LinearRgb {
+        LinearRgb::new(srgb::decode(self.r), srgb::decode(self.g), srgb::decode(self.b))
     }
 
     /// Quantised to 8 bits per channel by [`srgb::to_8bit`].
@@ -265,24 +266,24 @@ impl Srgb8 {
 
 /// The whole pipeline for one pixel: exposure, gamut map, encoding, 8 bits.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Display {
+pub struct PixelPipeline {
     /// How linear colours are scaled first.
     pub exposure: Exposure,
     /// How colours outside [0, 1]³ are brought in.
     pub gamut: GamutMap,
 }
 
-impl Display {
+impl PixelPipeline {
     /// From its two choices.
     #[must_use]
-    pub const fn new(exposure: Exposure, gamut: GamutMap) -> Display {
-        Display { exposure, gamut }
+    pub const fn new(exposure: Exposure, gamut: GamutMap) -> PixelPipeline {
+        PixelPipeline { exposure, gamut }
     }
 
     /// The pixel showing `rgb`.
     #[inline]
     #[must_use]
-    pub fn pixel(&self, rgb: LinearSrgb) -> Srgb8 {
+    pub fn pixel(&self, rgb: LinearRgb) -> Srgb8 {
         EncodedSrgb::encode(self.gamut.apply(self.exposure.apply(rgb))).to_8bit()
     }
 }

@@ -4,10 +4,12 @@
 //! - [`Xyz`]: the integral of a spectrum against the CIE 1931 matching
 //!   functions, in the units of the spectrum times nanometres (no
 //!   normalisation: a light of arbitrary scale gives XYZ of that scale).
-//! - [`LinearSrgb`]: XYZ through the matrix of Appendix 1, part D,
-//!   **unclamped**: a negative component means the colour is outside the
-//!   sRGB gamut, which is information, not an error.
-//! - [`srgb`]: the IEC 61966-2-1 transfer function.
+//! - [`LinearRgb`]: linear RGB in a space the caller keeps track of; the
+//!   assignment's linear sRGB is XYZ through the matrix of Appendix 1,
+//!   part D ([`Xyz::to_linear_srgb`]), **unclamped**: a negative component
+//!   means the colour is outside the sRGB gamut, which is information, not
+//!   an error.
+//! - [`srgb`]: the IEC 61966-2-1 transfer function, and sRGB's luminance.
 //! - [`display`]: the pipeline from a colour to a pixel: exposure, gamut
 //!   mapping (clip, or keep hue and luminance), encoding, 8 bits; linear
 //!   and encoded sRGB as different types.
@@ -18,7 +20,7 @@
 //!   an RGB colour as a spectrum, fitted in CIELAB by [`upsample`], or
 //!   looked up in [`rgb_table`].
 //!
-//! [`Xyz`] and [`LinearSrgb`] have the whole component-wise operator set
+//! [`Xyz`] and [`LinearRgb`] have the whole component-wise operator set
 //! (`+ - * /` with each other and with scalars on either side, the assign
 //! forms, `Neg`, `Sum`, `From<[f64; 3]>`). This floor uses only the
 //! spectrum floor below it (the observer's and the matrix's tables).
@@ -44,10 +46,10 @@ pub(crate) mod triple;
 pub mod upsample;
 mod xyz;
 
-pub use display::{Display, EncodedSrgb, Exposure, GamutMap, Srgb8};
+pub use display::{EncodedSrgb, Exposure, GamutMap, PixelPipeline, Srgb8};
 pub use matrix::Matrix;
 pub use rgb::LinearRgb;
 pub use rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded};
 pub use space::RgbSpace;
-pub use srgb::{LinearSrgb, XYZ_TO_SRGB};
+pub use srgb::XYZ_TO_SRGB;
 pub use xyz::Xyz;

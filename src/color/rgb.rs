@@ -1,16 +1,16 @@
 //! [`LinearRgb`]: linear RGB in some [`RgbSpace`](super::space::RgbSpace),
 //! unclamped. The space is the caller's to keep track of, as a renderer's
-//! working space is; [`LinearSrgb`] is the same three numbers known to be
-//! linear sRGB, and converts to and from it.
+//! working space is (pbrt-v4's `RGB` is the same): the assignment's linear
+//! sRGB ([`Xyz::to_linear_srgb`](super::Xyz::to_linear_srgb)), a space's
+//! `rgb`, a display's input.
 //!
 //! ```
-//! use speclab::{LinearSrgb, color::LinearRgb};
+//! use speclab::LinearRgb;
 //! let c = LinearRgb::new(0.2, 0.4, 0.8) * 0.5 + LinearRgb::splat(0.1);
 //! assert_eq!(c.to_array(), [0.2, 0.30000000000000004, 0.5]);
-//! assert_eq!(LinearRgb::from(LinearSrgb::new(1.0, 0.5, 0.0)).max_component(), 1.0);
+//! assert_eq!(LinearRgb::new(1.0, 0.5, 0.0).max_component(), 1.0);
 //! ```
 
-use crate::color::srgb::LinearSrgb;
 use crate::color::triple::triple_arithmetic;
 
 /// Linear RGB in some space, unclamped (a negative component is outside
@@ -56,17 +56,3 @@ impl LinearRgb {
 }
 
 triple_arithmetic!(LinearRgb { r, g, b });
-
-impl From<LinearSrgb> for LinearRgb {
-    /// The same numbers, no longer marked as sRGB.
-    fn from(c: LinearSrgb) -> Self {
-        LinearRgb::from(c.to_array())
-    }
-}
-
-impl From<LinearRgb> for LinearSrgb {
-    /// The same numbers, taken as linear sRGB.
-    fn from(c: LinearRgb) -> Self {
-        LinearSrgb::from(c.to_array())
-    }
-}

@@ -16,19 +16,18 @@
 //! are sRGB's.
 //!
 //! ```
-//! use speclab::{LinearSrgb, Spectrum};
+//! use speclab::{LinearRgb, Spectrum};
 //! use speclab::color::{RgbAlbedo, upsample::RgbSpace};
-//! let orange = LinearSrgb::new(0.8, 0.35, 0.05);
+//! let orange = LinearRgb::new(0.8, 0.35, 0.05);
 //! let albedo = RgbAlbedo::new(orange)?;
 //! assert!(albedo.eval(650.0) > albedo.eval(450.0));
 //! assert!(RgbSpace::srgb().rgb_of(&albedo).distance(orange.into()) < 1e-4);
-//! assert!(RgbAlbedo::new(LinearSrgb::new(1.2, 0.0, 0.0)).is_err()); // not a reflectance
+//! assert!(RgbAlbedo::new(LinearRgb::new(1.2, 0.0, 0.0)).is_err()); // not a reflectance
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
 use crate::color::rgb::LinearRgb;
 use crate::color::space::RgbSpace;
-use crate::color::srgb::LinearSrgb;
 use crate::error::Error;
 use crate::spectrum::observer::Y_BAR_INTEGRAL;
 use crate::spectrum::{Pieces, SigmoidPolynomial, Spectrum, TabulatedSpectrum};
@@ -207,7 +206,7 @@ impl RgbAlbedo {
     /// The reflectance whose colour under D65 is `rgb` (linear sRGB, each
     /// component in [0, 1]; otherwise an [`Error::Albedo`]), fitted: about
     /// 10 µs. [`RgbSpace::albedo`] does it in a lookup, in any space.
-    pub fn new(rgb: LinearSrgb) -> Result<Self, Error> {
+    pub fn new(rgb: LinearRgb) -> Result<Self, Error> {
         RgbSpace::srgb().fit_albedo(rgb)
     }
 }
@@ -218,7 +217,7 @@ impl RgbUnbounded {
     /// and NaN components are taken as 0: outside the gamut, there is no
     /// spectrum). The first call builds sRGB's table.
     #[must_use]
-    pub fn new(rgb: LinearSrgb) -> Self {
+    pub fn new(rgb: LinearRgb) -> Self {
         RgbSpace::srgb().unbounded(rgb)
     }
 }
@@ -229,7 +228,7 @@ impl RgbIlluminant {
     /// (1, 1, 1) has the luminance of a constant spectrum of 1 (`Y = ∫ȳ`).
     /// The first call builds sRGB's table.
     #[must_use]
-    pub fn new(rgb: LinearSrgb) -> Self {
+    pub fn new(rgb: LinearRgb) -> Self {
         RgbSpace::srgb().light(rgb)
     }
 }

@@ -1,7 +1,7 @@
 //! sRGB: linear sRGB by the assignment's matrix, and the IEC 61966-2-1
 //! transfer function that encodes it for display.
 //!
-//! [`LinearSrgb`] is XYZ through the matrix of Appendix 1, part D
+//! [`LinearRgb`] is XYZ through the matrix of Appendix 1, part D
 //! ([`XYZ_TO_SRGB`], four decimals as printed), **unclamped**. [`encode`]
 //! and [`decode`] are the standard's piecewise curve (a linear toe below
 //! 0.0031308, a 1/2.4 power above) and its inverse.
@@ -14,7 +14,7 @@
 //! ```
 
 use crate::color::matrix::{Matrix, inverse, mul};
-use crate::color::triple::triple_arithmetic;
+use crate::color::rgb::LinearRgb;
 use crate::color::xyz::Xyz;
 use crate::spectrum::data;
 
@@ -53,17 +53,6 @@ pub fn to_8bit(v: f64) -> u8 {
     (v.clamp(0.0, 1.0) * 255.0).round() as u8
 }
 
-/// Linear (not gamma-encoded) sRGB, unclamped.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct LinearSrgb {
-    /// Red.
-    pub r: f64,
-    /// Green.
-    pub g: f64,
-    /// Blue.
-    pub b: f64,
-}
-
 impl Xyz {
     /// Linear sRGB by the part D matrix, unclamped: the assignment's
     /// conversion, which Appendix 2's numbers use. A renderer's sRGB, the
@@ -72,49 +61,24 @@ impl Xyz {
     /// `rgb`; the two differ by up to 5e-4.
     #[inline]
     #[must_use]
-    pub fn to_linear_srgb(self) -> LinearSrgb {
-        LinearSrgb::from(mul(&XYZ_TO_SRGB, self.to_array()))
+    pub fn to_linear_srgb(self) -> LinearRgb {
+        LinearRgb::from(mul(&XYZ_TO_SRGB, self.to_array()))
+    }
+
+    /// Linear sRGB back to XYZ by [`SRGB_TO_XYZ`].
+    #[must_use]
+    pub fn from_linear_srgb(rgb: LinearRgb) -> Xyz {
+        Xyz::from(mul(&SRGB_TO_XYZ, rgb.to_array()))
     }
 }
 
-impl LinearSrgb {
-    /// From components.
-    #[inline]
-    #[must_use]
-    pub const fn new(r: f64, g: f64, b: f64) -> Self {
-        LinearSrgb { r, g, b }
-    }
-
-    /// True if no component is negative (the colour is inside sRGB's gamut,
-    /// up to the light's arbitrary brightness scale).
-    #[must_use]
-    pub fn in_gamut(self) -> bool {
-        self.r >= 0.0 && self.g >= 0.0 && self.b >= 0.0
-    }
-
-    /// CIE Y (luminance), by the middle row of [`SRGB_TO_XYZ`].
-    #[inline]
-    #[must_use]
-    pub fn luminance(self) -> f64 {
-        let [wr, wg, wb] = SRGB_TO_XYZ[1];
-        wr * self.r + wg * self.g + wb * self.b
-    }
-
-    /// Back to XYZ by [`SRGB_TO_XYZ`].
-    #[must_use]
-    pub fn to_xyz(self) -> Xyz {
-        Xyz::from(mul(&SRGB_TO_XYZ, self.to_array()))
-    }
-
-    /// Euclidean distance to `other`.
-    #[must_use]
-    pub fn distance(self, other: LinearSrgb) -> f64 {
-        let [r, g, b] = (self - other).to_array();
-        (r * r + g * g + b * b).sqrt()
-    }
+/// CIE Y (luminance) of linear sRGB, by the middle row of [`SRGB_TO_XYZ`].
+#[inline]
+#[must_use]
+pub fn luminance(rgb: LinearRgb) -> f64 {
+    let [wr, wg, wb] = SRGB_TO_XYZ[1];
+    wr * rgb.r + wg * rgb.g + wb * rgb.b
 }
-
-triple_arithmetic!(LinearSrgb { r, g, b });
 
 #[cfg(test)]
 mod tests {
@@ -151,8 +115,8 @@ mod tests {
     #[test]
     fn back_to_xyz() {
         let xyz = Xyz::new(0.3, 0.5, 0.2);
-        let back = xyz.to_linear_srgb().to_xyz();
+        let back = Xyz::from_linear_srgb(xyz.to_linear_srgb());
         assert!((back - xyz).to_array().iter().all(|d| d.abs() < 1e-12), "{back:?}");
-        assert!((xyz.to_linear_srgb().luminance() - 0.5).abs() < 1e-12);
+        assert!((luminance(xyz.to_linear_srgb()) - 0.5).abs() < 1e-12);
     }
 }

@@ -1,5 +1,5 @@
 //! The arithmetic of a colour's three numbers, shared by [`super::Xyz`] and
-//! [`super::LinearSrgb`]: component-wise `+ - * /` with the type and with
+//! [`super::LinearRgb`]: component-wise `+ - * /` with the type and with
 //! `f64` on either side, the `…Assign` forms, `Neg`, `Sum`, and
 //! conversions from and to `[f64; 3]`. Users never unpack fields to do
 //! arithmetic.

@@ -30,12 +30,12 @@
 //! (`tests/properties/upsample.rs`).
 //!
 //! ```
-//! use speclab::{LinearSrgb, Spectrum};
-//! use speclab::color::{LinearRgb, RgbAlbedo, space::RgbSpace};
-//! let orange = LinearSrgb::new(0.8, 0.35, 0.05);
+//! use speclab::{LinearRgb, Spectrum};
+//! use speclab::color::{RgbAlbedo, RgbSpace};
+//! let orange = LinearRgb::new(0.8, 0.35, 0.05);
 //! let albedo = RgbAlbedo::new(orange)?;
 //! let back = RgbSpace::srgb().rgb_of(&albedo);
-//! assert!(back.distance(LinearRgb::from(orange)) < 1e-4);
+//! assert!(back.distance(orange) < 1e-4);
 //! assert!((0.0..=1.0).contains(&albedo.eval(600.0)));
 //! # Ok::<(), speclab::Error>(())
 //! ```

@@ -36,19 +36,6 @@ use std::path::Path;
 
 pub use speclab_tables::read::{Format, MAX_BYTES};
 
-/// The parsers and the reading route, re-exported from `speclab-tables`
-/// until this release: depend on that crate for them.
-macro_rules! moved_to_tables {
-    ($($module:ident),*) => {$(
-        #[doc = concat!("`speclab_tables::", stringify!($module), "`: moved.")]
-        #[deprecated(since = "0.2.0", note = "depend on `speclab-tables` and use its modules")]
-        pub mod $module {
-            pub use speclab_tables::$module::*;
-        }
-    )*};
-}
-moved_to_tables!(brace, columns, json, read, text);
-
 use crate::error::Error;
 use crate::spectrum::{Interpolation, Role, TabulatedSpectrum};
 

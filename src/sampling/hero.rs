@@ -18,39 +18,34 @@
 //! contributes nothing). The constructors without an observer weigh by the
 //! dense one (`DenseObserver`: a load per wavelength, as pbrt-v4); the
 //! exact one ([`Cie1931`]) is [`HeroSample::exact`] and the `…_with`
-//! constructors' choice, and the estimators here, which are judged
-//! against the exact integrals, use it.
-//! [`estimate`] averages n samples.
+//! constructors' choice: an estimate judged against the exact integrals
+//! uses it.
 //!
 //! ```
-//! use rand::{SeedableRng, rngs::StdRng};
-//! use speclab::{data::{lights, patches}, sampling::hero, HeroSample};
+//! use speclab::{data::{lights, patches}, HeroSample, Xyz};
 //! let h = HeroSample::<4>::exact(0.0);
 //! assert_eq!(h.lambda(), &[380.0, 467.5, 555.0, 642.5]);
 //! let v = lights::D65.sample(&h) * patches::A1.sample(&h);
 //! let one = h.to_xyz(v); // a one-sample estimate
 //! assert!((h.y(v) - one.y).abs() < 1e-12 * one.y);
-//! let n = std::num::NonZeroUsize::new(1000).unwrap();
-//! let mean = hero::estimate::<4, _>(&lights::D65, &patches::A1, n, &mut StdRng::seed_from_u64(1));
-//! assert!(one.y > 0.0 && (mean.y - 82.0).abs() < 5.0);
+//! let n = 1000; // the mean of n, from the renderer's own numbers
+//! let mean: Xyz = (0..n).map(|i| {
+//!     let h = HeroSample::<4>::exact((i as f64 + 0.5) / n as f64);
+//!     h.to_xyz(lights::D65.sample(&h) * patches::A1.sample(&h))
+//! }).sum::<Xyz>() / n as f64;
+//! assert!(one.y > 0.0 && (mean.y - 82.0).abs() < 1.0);
 //! ```
 //!
 //! ```compile_fail
 //! let nothing = speclab::HeroSample::<0>::new(0.5);
 //! ```
 
-use std::num::NonZeroUsize;
-
-use rand::Rng;
-
-use crate::color::Xyz;
 use crate::error::Error;
-use crate::sampling::pdf::{Uniform, WavelengthPdf};
-use crate::sampling::strata::Strata;
-use crate::sampling::wavelengths::{Weighted, dot_slices, weighted_wavelengths};
+use crate::sampling::pdf::WavelengthPdf;
+use crate::sampling::wavelengths::{Weighted, weighted_wavelengths};
 use crate::spectrum::DenseObserver;
-use crate::spectrum::observer::{self, Cie1931, Observer};
-use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, Spectrum};
+use crate::spectrum::observer::{Cie1931, Observer};
+use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum};
 
 /// K wavelengths drawn together (a hero and K − 1 companions), each with
 /// its density, and their weights `c̄(λⱼ)/(K·pdfⱼ)`: the drawn kind of
@@ -60,13 +55,6 @@ use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, Spectrum
 pub struct HeroSample<const K: usize, T: Float = f64>(pub(crate) Weighted<K, T>);
 
 weighted_wavelengths!(HeroSample);
-
-/// The usual hero width: four wavelengths per sample.
-pub const USUAL_K: usize = 4;
-
-/// The most wavelengths a sample of a width chosen at run time takes
-/// ([`estimate_width`]).
-pub const MAX_WIDTH: usize = 64;
 
 impl<const K: usize, T: Float> HeroSample<K, T> {
     /// Drawn wavelengths from what they hold.
@@ -143,7 +131,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     /// The sample for `u` under the density `pdf`, rotated in primary-sample
     /// space: `λⱼ = P⁻¹((u + j/K) mod 1)`, so that every `λⱼ` has density p
     /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased; weighted by
-    /// the dense observer, as [`HeroSample::new`] (with [`Uniform`], this is
+    /// the dense observer, as [`HeroSample::new`] (with [`Uniform`](crate::sampling::pdf::Uniform), this is
     /// [`HeroSample::new`]'s sample to rounding). `u` is taken as in
     /// [`HeroSample::new`].
     #[inline(always)]
@@ -279,84 +267,6 @@ fn fract_slow(u: f64) -> f64 {
     let f = if f < 0.0 { f + 1.0 } else { f };
     // −1e-17 + 1 rounds to 1.
     if f < 1.0 { f } else { 0.0 }
-}
-
-/// The mean of `n` one-sample estimates of `light × surface`, wavelengths
-/// uniform and independent, drawn with `rng`; accumulates in f64. The same
-/// seed gives the same result. `n` is non-zero by type: a mean of no
-/// samples does not exist.
-#[must_use]
-pub fn estimate<const K: usize, R: Rng + ?Sized>(
-    light: &impl Spectrum,
-    surface: &impl Spectrum,
-    n: NonZeroUsize,
-    rng: &mut R,
-) -> Xyz {
-    estimate_with::<K, _, R>(light, surface, n, &Uniform, Strata::None, rng)
-}
-
-/// [`estimate`] with wavelengths drawn from `pdf` and the n primary numbers
-/// spread by `strata`: unbiased for every pdf that is positive wherever
-/// `light × surface` is, and every strata.
-#[must_use]
-pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
-    light: &impl Spectrum,
-    surface: &impl Spectrum,
-    n: NonZeroUsize,
-    pdf: &P,
-    strata: Strata,
-    rng: &mut R,
-) -> Xyz {
-    let sum: Xyz = strata
-        .points(n.get(), K, rng)
-        .map(|u| {
-            let h = HeroSample::<K>::from_pdf_with(u, pdf, &Cie1931);
-            h.to_xyz(light.sample(&h) * surface.sample(&h))
-        })
-        .sum();
-    sum / n.get() as f64
-}
-
-/// [`estimate_with`] for a hero width `k` chosen at run time (the study's),
-/// through the same weighted sum on slices: `k` wavelengths per sample,
-/// `1 ≤ k ≤` [`MAX_WIDTH`] (else an [`Error::Count`]). The same numbers as
-/// `estimate_with::<K>` to rounding, from the same draws.
-pub fn estimate_width<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
-    k: usize,
-    light: &(impl Spectrum + ?Sized),
-    surface: &(impl Spectrum + ?Sized),
-    n: NonZeroUsize,
-    pdf: &P,
-    strata: Strata,
-    rng: &mut R,
-) -> Result<Xyz, Error> {
-    if !(1..=MAX_WIDTH).contains(&k) {
-        return Err(Error::Count { what: "a hero width", found: k, min: 1, max: MAX_WIDTH });
-    }
-    let (mut lambda, mut rows) = ([0.0; MAX_WIDTH], [[0.0; MAX_WIDTH]; 3]);
-    let (mut light_at, mut surface_at) = ([0.0; MAX_WIDTH], [0.0; MAX_WIDTH]);
-    let lambda = &mut lambda[..k];
-    let (light_at, surface_at) = (&mut light_at[..k], &mut surface_at[..k]);
-    let per_k = 1.0 / k as f64;
-    let mut sum = Xyz::ZERO;
-    for u in strata.points(n.get(), k, rng) {
-        let u = fract(u);
-        for (j, l) in lambda.iter_mut().enumerate() {
-            let (drawn, inv_pdf) = pdf.sample_with_inv_pdf(rotation(u, j, k));
-            let (cmf, s) = (observer::xyz_bar(drawn), inv_pdf * per_k);
-            *l = drawn;
-            (0..3).for_each(|c| rows[c][j] = cmf[c] * s);
-        }
-        light.eval_many(lambda, light_at);
-        surface.eval_many(lambda, surface_at);
-        light_at.iter_mut().zip(surface_at.iter()).for_each(|(l, s)| *l *= s);
-        sum += Xyz::new(
-            dot_slices(&rows[0][..k], light_at),
-            dot_slices(&rows[1][..k], light_at),
-            dot_slices(&rows[2][..k], light_at),
-        );
-    }
-    Ok(sum / n.get() as f64)
 }
 
 #[cfg(test)]

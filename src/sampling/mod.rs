@@ -15,9 +15,7 @@
 //!   (`prior.rs`); a renderer takes it as a `FixedWavelengths<M, T>`.
 //! - [`pdf`]: wavelength densities (uniform, visible, following a light)
 //!   behind the [`pdf::WavelengthPdf`] trait, and [`binned`]: any of them
-//!   as equal-probability bins, sampled without a search; [`strata`]: how
-//!   the primary numbers of an estimate are spread (none, jittered,
-//!   Kronecker); [`seed`]: the one seeding helper (SplitMix64).
+//!   as equal-probability bins, sampled without a search.
 //! - [`mod@reference`]: the exact integral, which the estimates are judged by;
 //!   [`PreparedLight`]: the same as a dot product, for many reflectances;
 //!   [`variance`]: the exact variance of one random or hero sample.
@@ -26,29 +24,28 @@
 //! strategy only chooses the wavelengths and their pdf. **A new wavelength
 //! distribution** implements [`pdf::WavelengthPdf`] in `pdf.rs` or in the
 //! renderer; [`HeroSample::from_pdf`] rotates it in primary-sample space,
-//! and [`hero::estimate_with`], the exact variances and the study take it
-//! from there. Wavelengths from elsewhere enter through
-//! [`HeroSample::from_wavelengths`].
+//! and the exact variances and the study take it from there. Wavelengths
+//! from elsewhere enter through [`HeroSample::from_wavelengths`].
 //!
 //! This floor uses the spectrum and colour floors below it.
 //!
 //! **From a renderer's own numbers.** Nothing here needs a random-number
 //! generator: a renderer with its own sampler (Sobol', blue noise, a
-//! hash) spreads its uniform numbers with [`strata::Strata::point`] and
-//! draws wavelengths with any pdf, or hands over its own wavelengths:
+//! hash) draws wavelengths from its uniform numbers with any pdf, or hands
+//! over its own wavelengths:
 //!
 //! ```
 //! use speclab::{data::{lights, patches}, HeroSample, Xyz};
-//! use speclab::sampling::{pdf::{LightPdf, Uniform, Visible, WavelengthPdf}, strata::Strata};
-//! let own = |i: usize| ((i as f64 + 0.5) * 0.754_877_666_246_692_7).fract(); // the renderer's sequence
+//! use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 //! let f11 = LightPdf::light(&lights::F11)?;
 //! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform, &Visible, &f11];
 //! let n = 64;
+//! // The renderer's own numbers, stratified over [0, 1/4): the hero rotations fill the rest.
+//! let own = |i: usize| (i as f64 + 0.5) / (4 * n) as f64;
 //! for pdf in pdfs {
 //!     let mut pixel = Xyz::ZERO;
 //!     for i in 0..n {
-//!         let u = Strata::Jittered.point(i, n, 4, own(i)); // sample i of n, hero width 4
-//!         let h = HeroSample::<4>::from_pdf(u, pdf);
+//!         let h = HeroSample::<4>::from_pdf(own(i), pdf);
 //!         pixel += h.to_xyz(h.sample(&lights::F11) * h.sample(&patches::G4));
 //!     }
 //!     let exact = speclab::sampling::reference::xyz(&lights::F11, &patches::G4);
@@ -71,7 +68,6 @@
 
 pub mod binned;
 pub mod buckets;
-pub mod choice;
 pub mod fitted;
 pub mod hero;
 mod light_pdf;
@@ -82,26 +78,13 @@ pub(crate) mod prior;
 pub mod reference;
 pub mod regular;
 pub mod rule;
-pub mod seed;
-pub mod strata;
+mod seed;
 pub mod variance;
 pub mod wavelengths;
+mod widths;
 
 pub use hero::HeroSample;
 pub use prepared::PreparedLight;
 pub use regular::{BoxAverage, Center, RegularSpectrum};
 pub use wavelengths::{Emission, FixedWavelengths};
-
-/// Centre buckets: renamed.
-#[deprecated(since = "0.2.0", note = "use `Center`")]
-pub type Centre = Center;
-
-/// A spectrum's values at K wavelengths: moved to the spectrum floor.
-#[deprecated(since = "0.2.0", note = "use `speclab::SampledSpectrum` (or `spectrum::SampledSpectrum`)")]
-pub type SampledSpectrum<const K: usize, T = f64> = crate::spectrum::SampledSpectrum<K, T>;
-
-/// The one wavelength type of 0.1: split into the drawn kind, which
-/// keeps this name's methods and its pdf ([`HeroSample`]), and the fixed
-/// kind, which has no pdf ([`FixedWavelengths`]).
-#[deprecated(since = "0.2.0", note = "use `HeroSample` (drawn) or `FixedWavelengths` (a rule's)")]
-pub type SampledWavelengths<const K: usize, T = f64> = HeroSample<K, T>;
+pub use widths::{AtWidth, WIDTHS, with_lanes};

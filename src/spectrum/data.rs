@@ -239,15 +239,6 @@ macro_rules! handle {
             }
         }
 
-        impl $ty {
-            /// The built-in one of this name, in any case.
-            #[deprecated(since = "0.2.0", note = "use `str::parse`")]
-            #[must_use]
-            pub fn from_name(name: &str) -> Option<Self> {
-                name.parse().ok()
-            }
-        }
-
         impl FromStr for $ty {
             type Err = Error;
             /// The built-in one of this name, in any case.
@@ -257,31 +248,6 @@ macro_rules! handle {
             }
         }
     };
-}
-
-/// The assignment's spectra at the top of `data`: moved into their
-/// lists (`data::lights::D65`, `data::patches::G4`,
-/// `data::cie1931::X_BAR`).
-macro_rules! moved {
-    ($($name:ident => $path:path, $note:literal;)*) => {$(
-        #[doc = concat!("Moved to `data::", stringify!($path), "`.")]
-        #[deprecated(since = "0.2.0", note = $note)]
-        pub static $name: &TabulatedSpectrum = &$path;
-    )*};
-}
-moved! {
-    A => lights::A, "use `data::lights::A`";
-    D65 => lights::D65, "use `data::lights::D65`";
-    F11 => lights::F11, "use `data::lights::F11`";
-    E2 => patches::E2, "use `data::patches::E2`";
-    F4 => patches::F4, "use `data::patches::F4`";
-    G4 => patches::G4, "use `data::patches::G4`";
-    H4 => patches::H4, "use `data::patches::H4`";
-    J4 => patches::J4, "use `data::patches::J4`";
-    A1 => patches::A1, "use `data::patches::A1`";
-    CIE_X => cie1931::X_BAR, "use `data::cie1931::X_BAR`";
-    CIE_Y => cie1931::Y_BAR, "use `data::cie1931::Y_BAR`";
-    CIE_Z => cie1931::Z_BAR, "use `data::cie1931::Z_BAR`";
 }
 
 /// A built-in light, by its place in [`lights::ALL`] (the appendix's
@@ -294,12 +260,6 @@ handle!(Light, lights, "a built-in light");
 impl Light {
     /// The assignment's three lights, in the order of Appendix 2's columns.
     pub const APPENDIX: [Light; 3] = [Light::A, Light::D65, Light::F11];
-
-    /// Every built-in light, in [`lights::ALL`]'s order.
-    #[deprecated(since = "0.2.0", note = "use `Light::ALL`")]
-    pub fn all() -> impl Iterator<Item = Light> {
-        Light::ALL.into_iter()
-    }
 }
 
 /// One of the six ColorChecker SG patches of the appendix, by its place in

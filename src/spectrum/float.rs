@@ -119,7 +119,7 @@ pub(crate) mod sealed {
 
         /// Wavelengths and the values to fill at them, in this precision (how
         /// a spectrum reaches its `f32` or `f64` evaluation).
-        fn lanes<'a>(lambda: &'a [Self], values: &'a mut [Self]) -> Lanes<'a>;
+        fn lanes<'a>(lambda: &'a [Self], values: &'a mut [Self]) -> Precision<'a>;
         /// The table of this precision out of a pair (for tables computed at
         /// compile time in both).
         fn choose<'a, const N: usize, const R: usize>(
@@ -134,7 +134,7 @@ pub(crate) mod sealed {
     /// two precisions: what [`Spectrum::sample`](super::Spectrum::sample)
     /// hands to `eval_many` or `eval_many_f32`.
     #[derive(Debug)]
-    pub enum Lanes<'a> {
+    pub enum Precision<'a> {
         /// Single precision.
         F32 {
             /// The wavelengths, nm.
@@ -212,8 +212,8 @@ impl sealed::Sealed for f32 {
         [sx, sy, sz]
     }
     #[inline(always)]
-    fn lanes<'a>(lambda: &'a [f32], values: &'a mut [f32]) -> sealed::Lanes<'a> {
-        sealed::Lanes::F32 { lambda, values }
+    fn lanes<'a>(lambda: &'a [f32], values: &'a mut [f32]) -> sealed::Precision<'a> {
+        sealed::Precision::F32 { lambda, values }
     }
     #[inline(always)]
     fn choose<'a, const N: usize, const R: usize>(
@@ -279,8 +279,8 @@ impl sealed::Sealed for f64 {
         wide::f64x4::splat(v)
     }
     #[inline(always)]
-    fn lanes<'a>(lambda: &'a [f64], values: &'a mut [f64]) -> sealed::Lanes<'a> {
-        sealed::Lanes::F64 { lambda, values }
+    fn lanes<'a>(lambda: &'a [f64], values: &'a mut [f64]) -> sealed::Precision<'a> {
+        sealed::Precision::F64 { lambda, values }
     }
     #[inline(always)]
     fn choose<'a, const N: usize, const R: usize>(

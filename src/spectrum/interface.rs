@@ -53,21 +53,22 @@
 //! Monte Carlo estimate.
 //!
 //! ```
-//! use std::num::NonZeroUsize;
-//! use rand::{SeedableRng, rngs::StdRng};
-//! use speclab::{data::lights, HeroSample, LinearSrgb, RegularSpectrum};
-//! use speclab::sampling::{hero, reference};
+//! use speclab::{data::lights, HeroSample, LinearRgb, RegularSpectrum, Xyz};
+//! use speclab::sampling::reference;
 //! use speclab::spectrum::{FnSpectrum};
 //! use speclab::color::RgbAlbedo;
 //! let paint = FnSpectrum(|l: f64| 0.2 + 0.6 / (1.0 + ((600.0 - l) / 20.0).exp())); // reddish
-//! let texture = RgbAlbedo::new(LinearSrgb::new(0.1, 0.5, 0.2))?; // greenish
+//! let texture = RgbAlbedo::new(LinearRgb::new(0.1, 0.5, 0.2))?; // greenish
 //! for (surface, red) in [(&paint as &dyn speclab::Spectrum, true), (&texture, false)] {
 //!     let h = HeroSample::<4>::new(0.5);
 //!     let one = h.to_xyz(h.sample(&lights::D65) * h.sample(&surface));
 //!     let exact = reference::xyz(&lights::D65, &surface);
 //!     let buckets = (RegularSpectrum::<16>::center(&lights::D65) * RegularSpectrum::center(&surface)).to_xyz();
-//!     let n = NonZeroUsize::new(1000).unwrap();
-//!     let mean = hero::estimate::<4, _>(&lights::D65, &surface, n, &mut StdRng::seed_from_u64(1));
+//!     let n = 1000;
+//!     let mean = (0..n).map(|i| {
+//!         let h = HeroSample::<4>::exact((i as f64 + 0.5) / n as f64);
+//!         h.to_xyz(h.sample(&lights::D65) * h.sample(&surface))
+//!     }).sum::<Xyz>() / n as f64;
 //!     assert!(one.y > 0.0 && (buckets.y - exact.y).abs() < 0.02 * exact.y);
 //!     assert!((mean.y - exact.y).abs() < 0.02 * exact.y);
 //!     let rgb = exact.to_linear_srgb();
@@ -80,7 +81,7 @@ use std::borrow::Cow;
 
 use crate::spectrum::dense::DenseSpectrum;
 use crate::spectrum::float::Float;
-use crate::spectrum::float::sealed::Lanes;
+use crate::spectrum::float::sealed::Precision;
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{Interpolation, Role};
 
@@ -177,8 +178,8 @@ pub trait Spectrum {
         let mut values = [T::ZERO; K];
         let nearest = at.nearest_nm();
         match T::lanes(at.lambda(), &mut values) {
-            Lanes::F32 { lambda, values } => self.eval_many_nearest_f32(lambda, &nearest, values),
-            Lanes::F64 { lambda, values } => self.eval_many_nearest(lambda, &nearest, values),
+            Precision::F32 { lambda, values } => self.eval_many_nearest_f32(lambda, &nearest, values),
+            Precision::F64 { lambda, values } => self.eval_many_nearest(lambda, &nearest, values),
         }
         SampledSpectrum::new(values)
     }

@@ -80,17 +80,3 @@ pub use sigmoid::{SigmoidPolynomial, sigmoid, sigmoid_f32};
 pub use tabulated::Tables;
 pub use tabulated::TabulatedSpectrum;
 pub use validate::{Interpolation, Role};
-
-/// The width of the range, nm: renamed.
-#[deprecated(since = "0.2.0", note = "use `LAMBDA_WIDTH`")]
-pub const WIDTH: f64 = LAMBDA_WIDTH;
-
-/// Where a spectrum kept what was computed from it: gone. Prepared values
-/// are explicit now, owned by whoever prepares them.
-#[deprecated(
-    since = "0.2.0",
-    note = "prepare explicitly: `sampling::PreparedLight` (exact weights), \
-            `sampling::pdf::LightPdf` (pdfs), `sampling::fitted::FittedRules` (rules)"
-)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Cache;

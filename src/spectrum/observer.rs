@@ -78,12 +78,12 @@ const fn rows() -> [[f64; 12]; SEGMENTS] {
 /// and 1 at once, in the order of the scalar rule (the same bits), and
 /// gives the row `[x̄, ȳ, z̄, 1]` a drawn sample scales by its weight. 80
 /// segments of 128 bytes, each two cache lines.
-static LANES: Lanes = Lanes(lanes());
+static CHANNELS: Channels = Channels(channels());
 
 #[repr(C, align(64))]
-struct Lanes([[f64x4; 4]; SEGMENTS]);
+struct Channels([[f64x4; 4]; SEGMENTS]);
 
-const fn lanes() -> [[f64x4; 4]; SEGMENTS] {
+const fn channels() -> [[f64x4; 4]; SEGMENTS] {
     let mut out = [[f64x4::ZERO; 4]; SEGMENTS];
     let mut k = 0;
     while k < SEGMENTS {
@@ -165,7 +165,7 @@ fn lone_row(lambda: f64) -> [f64; 4] {
 }
 
 /// `[x̄, ȳ, z̄, 1]` at `lambda` nm, x̄, ȳ, z̄ zero outside 380–780 nm (and
-/// for NaN): four Horner steps on the lanes of [`LANES`] (the fourth
+/// for NaN): four Horner steps on the lanes of [`CHANNELS`] (the fourth
 /// lane's coefficients are `[1, 0, 0, 0]`), clamped at zero as the scalar
 /// rule clamps (`p > 0 ? p : 0`, what SSE, AVX and NEON's maximum does;
 /// the support's mask discards whatever a NaN gave), and no branch.
@@ -173,7 +173,7 @@ fn lone_row(lambda: f64) -> [f64; 4] {
 pub(crate) fn xyz_bar_row(lambda: f64) -> [f64; 4] {
     const FIRST: f64 = CIE_Y_LAMBDA[0];
     const LAST: f64 = CIE_Y_LAMBDA[SEGMENTS];
-    let (c, knot) = LOOKUP.row(&LANES.0, &CIE_Y_LAMBDA, lambda);
+    let (c, knot) = LOOKUP.row(&CHANNELS.0, &CIE_Y_LAMBDA, lambda);
     let t = f64x4::splat(lambda - knot);
     let [c0, c1, c2, c3] = c;
     let p = (c0 + t * (c1 + t * (c2 + t * c3))).fast_max(f64x4::ZERO);

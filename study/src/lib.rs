@@ -40,11 +40,13 @@
 #![warn(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub mod carry;
 mod error;
 pub mod evaluate;
 pub mod experiments;
 pub mod planning;
 pub mod published;
 pub mod render;
+pub mod sampling;
 
 pub use error::StudyError;

@@ -5,7 +5,6 @@
 
 mod alloc;
 mod build_data;
-mod carry;
 mod fuzz_body;
 mod fuzz_regressions;
 mod input_errors;

@@ -7,7 +7,7 @@
 use speclab::color::RgbAlbedo;
 use speclab::data::{lights, patches};
 use speclab::spectrum::{DenseSpectrum, Float, Wavelengths};
-use speclab::{HeroSample, LinearSrgb, SampledSpectrum, Spectrum};
+use speclab::{HeroSample, LinearRgb, SampledSpectrum, Spectrum};
 
 /// A renderer's own enum of materials.
 enum Material {
@@ -33,7 +33,7 @@ impl Spectrum for Material {
 
 fn check<T: Float>() {
     let tables = [&patches::G4, &patches::A1, &lights::F11].map(DenseSpectrum::new);
-    let rgb = RgbAlbedo::new(LinearSrgb::new(0.2, 0.5, 0.1)).expect("in gamut");
+    let rgb = RgbAlbedo::new(LinearRgb::new(0.2, 0.5, 0.1)).expect("in gamut");
     let boxed: Vec<Box<dyn Spectrum + Send + Sync>> =
         vec![Box::new(tables[0].clone()), Box::new(tables[1].clone()), Box::new(rgb)];
     let own = [Material::Table(tables[0].clone()), Material::Table(tables[1].clone()), Material::Rgb(rgb)];

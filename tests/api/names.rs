@@ -9,7 +9,6 @@ use speclab::Error;
 use speclab::color::GamutMap;
 use speclab::data::{Light, Patch};
 use speclab::sampling::buckets::BucketRule;
-use speclab::sampling::strata::Strata;
 
 /// Every choice's name reads back as the choice, in any case; names are
 /// distinct; an unknown name lists them all.
@@ -25,7 +24,7 @@ where
     }
     let err = "nonsense".parse::<T>().unwrap_err().to_string();
     if names.len() <= 12 {
-        // Every name listed, in order (the exact wording: `strata_error`).
+        // Every name listed, in order (the exact wording: `bucket_rule_error`).
         let listed = err
             .strip_prefix(&format!("expected {what} ("))
             .and_then(|e| e.strip_suffix("), found \"nonsense\""));
@@ -43,9 +42,9 @@ where
 
 /// The message in full, for one list.
 #[test]
-fn strata_error() {
-    let err = "nonsense".parse::<Strata>().unwrap_err().to_string();
-    assert_eq!(err, "expected a strata (none, jitter or kronecker), found \"nonsense\"");
+fn bucket_rule_error() {
+    let err = "nonsense".parse::<BucketRule>().unwrap_err().to_string();
+    assert_eq!(err, "expected a bucket rule (center or box), found \"nonsense\"");
 }
 
 #[test]
@@ -54,22 +53,14 @@ fn core_choices() {
     round_trip(&lights, &speclab::data::lights::NAMES, "a built-in light");
     assert_eq!(Light::APPENDIX.map(|l| l.to_string()), ["A", "D65", "F11"]);
     round_trip(&Patch::ALL, &["E2", "F4", "G4", "H4", "J4", "A1"], "a built-in patch");
-    round_trip(&Strata::ALL, &["none", "jitter", "kronecker"], "a strata");
     round_trip(&GamutMap::ALL, &["clip", "chroma"], "a gamut map");
     round_trip(&BucketRule::ALL, &["center", "box"], "a bucket rule");
 }
 
-#[test]
-fn pdf_choices() {
-    use speclab::sampling::choice::PdfKind;
-    round_trip(&PdfKind::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
-}
-
 /// The surfaces' names are the patches' then the conductors', each found
-/// by `surface_named` (a patch as itself, a conductor tabulated); the
-/// deprecated `Light::all()` is `Light::ALL`.
+/// by `surface_named` (a patch as itself, a conductor tabulated).
 #[test]
-fn surface_names_and_the_old_light_list() {
+fn surface_names() {
     use speclab::data::{SURFACE_NAMES, conductors, patches, surface_named};
     let expected: Vec<&str> = patches::NAMES.iter().chain(&conductors::NAMES).copied().collect();
     assert_eq!(SURFACE_NAMES.to_vec(), expected);
@@ -80,7 +71,4 @@ fn surface_names_and_the_old_light_list() {
     }
     let err = surface_named("nonsense").unwrap_err().to_string();
     assert!(err.contains("a built-in surface"), "{err}");
-    #[allow(deprecated)]
-    let all: Vec<Light> = Light::all().collect();
-    assert_eq!(all, Light::ALL.to_vec());
 }

@@ -290,11 +290,11 @@ fn pdf_round_trip() {
 /// (tabulated patches and an RGB texture's sigmoid) under F11 and A.
 #[test]
 fn exact_paths_are_brute_force_quadrature() {
-    use speclab::LinearSrgb;
+    use speclab::LinearRgb;
     use speclab::color::RgbAlbedo;
     use speclab::sampling::reference::ExactPaths;
     use speclab::spectrum::Spectrum;
-    let texel = RgbAlbedo::new(LinearSrgb::new(0.7, 0.3, 0.1)).expect("an albedo");
+    let texel = RgbAlbedo::new(LinearRgb::new(0.7, 0.3, 0.1)).expect("an albedo");
     let spectra: [&dyn Spectrum; 6] = [
         &data::lights::F11,
         &data::lights::A,

@@ -5,7 +5,7 @@
 //! time.
 
 use speclab::{
-    BoxAverage, Center, HeroSample, LinearSrgb, RegularSpectrum, SampledSpectrum, TabulatedSpectrum, Xyz,
+    BoxAverage, Center, HeroSample, LinearRgb, RegularSpectrum, SampledSpectrum, TabulatedSpectrum, Xyz,
 };
 use static_assertions::{assert_eq_size, assert_impl_all};
 
@@ -30,6 +30,6 @@ assert_impl_all!(SampledSpectrum<4>: Copy, Send, Sync, Default);
 assert_impl_all!(RegularSpectrum<16>: Copy, Send, Sync);
 assert_impl_all!(RegularSpectrum<16, BoxAverage>: Copy, Send, Sync);
 assert_impl_all!(Xyz: Copy, Send, Sync, Default, std::iter::Sum);
-assert_impl_all!(LinearSrgb: Copy, Send, Sync);
+assert_impl_all!(LinearRgb: Copy, Send, Sync);
 assert_impl_all!(TabulatedSpectrum: Send, Sync);
 assert_impl_all!(speclab::Error: Send, Sync, std::error::Error);

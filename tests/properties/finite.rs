@@ -3,12 +3,10 @@
 //! subnormals up to the validation limit go through every computation;
 //! values past the limit are refused where they are written.
 
-use std::num::NonZeroUsize;
-
 use proptest::prelude::*;
 use rand::SeedableRng;
 use rand::rngs::StdRng;
-use speclab::sampling::{hero, reference};
+use speclab::sampling::reference;
 use speclab::spectrum::validate::MAX_VALUE;
 use speclab::{BoxAverage, Center, Error, RegularSpectrum, Role, TabulatedSpectrum, Xyz};
 
@@ -47,10 +45,9 @@ proptest! {
         let l = spectrum(light, Role::Light).expect("within the limits");
         let s = spectrum(surface, Role::Reflectance).expect("within the limits");
         prop_assert!(finite(reference::xyz(&l, &s)) && finite(reference::white(&l)));
-        let n = NonZeroUsize::new(3).expect("non-zero");
         let mut rng = StdRng::seed_from_u64(seed);
-        prop_assert!(finite(hero::estimate::<1, _>(&l, &s, n, &mut rng)));
-        prop_assert!(finite(hero::estimate::<4, _>(&l, &s, n, &mut rng)));
+        prop_assert!(finite(crate::hero_mean::<1>(&l, &s, 3, &mut rng)));
+        prop_assert!(finite(crate::hero_mean::<4>(&l, &s, 3, &mut rng)));
         let centre = RegularSpectrum::<16, Center>::center(&l) * RegularSpectrum::center(&s);
         let boxed = RegularSpectrum::<16, BoxAverage>::box_average(&l) * RegularSpectrum::box_average(&s);
         prop_assert!(finite(centre.to_xyz()) && finite(boxed.to_xyz()));

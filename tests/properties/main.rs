@@ -17,3 +17,22 @@ mod regular;
 mod rgb_table;
 mod spectra;
 mod upsample;
+
+/// The mean XYZ of `n` hero samples of `light × surface`, wavelengths
+/// uniform and independent from `rng`, weighted by the exact observer (the
+/// study's estimator, written as a renderer would).
+pub fn hero_mean<const K: usize>(
+    light: &(impl speclab::Spectrum + ?Sized),
+    surface: &(impl speclab::Spectrum + ?Sized),
+    n: usize,
+    rng: &mut impl rand::Rng,
+) -> speclab::Xyz {
+    use rand::RngExt;
+    let sum: speclab::Xyz = (0..n)
+        .map(|_| {
+            let h = speclab::HeroSample::<K>::exact(rng.random::<f64>());
+            h.to_xyz(h.sample(&light) * h.sample(&surface))
+        })
+        .sum();
+    sum / n as f64
+}

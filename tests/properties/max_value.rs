@@ -10,7 +10,7 @@ use speclab::data::{conductors, glasses, lights, patches};
 use speclab::spectrum::{
     Blackbody, Cauchy, Constant, DenseSpectrum, FnSpectrum, Mixture, Product, SigmoidPolynomial,
 };
-use speclab::{LinearSrgb, Role, Spectrum, TabulatedSpectrum};
+use speclab::{LinearRgb, Role, Spectrum, TabulatedSpectrum};
 
 /// The grid's step, nm.
 const H: f64 = 0.01;
@@ -96,7 +96,7 @@ proptest! {
         exact(&Blackbody::absolute(kelvin).unwrap(), 1e-12)?;
         let poly = SigmoidPolynomial::new(c);
         exact(&RgbAlbedo::from_polynomial(poly), 1e-12)?;
-        exact(&RgbAlbedo::new(LinearSrgb::from(rgb)).unwrap(), 1e-12)?;
+        exact(&RgbAlbedo::new(LinearRgb::from(rgb)).unwrap(), 1e-12)?;
         exact(&RgbUnbounded::from_parts(3.0, poly), 1e-12)?;
     }
 

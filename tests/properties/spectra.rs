@@ -1,20 +1,18 @@
 //! Any spectrum through every path: a renderer's closure, a constant, a
 //! blackbody, an RGB albedo and dense tables go through `HeroSample::sample`,
-//! `reference::xyz`, `RegularSpectrum` and `hero::estimate` like tabulated
+//! `reference::xyz`, `RegularSpectrum` and a hero estimate like tabulated
 //! spectra. Where a closure computes a table's own interpolant, every path
 //! gives the table's numbers (exactly for the estimators, to rounding for
 //! integrals); quadrature of smooth spectra agrees with a fine sum.
-
-use std::num::NonZeroUsize;
 
 use rand::SeedableRng;
 use rand::rngs::StdRng;
 use speclab::color::RgbAlbedo;
 use speclab::data::{lights, patches};
-use speclab::sampling::{hero, reference};
+use speclab::sampling::reference;
 use speclab::spectrum::{Blackbody, Constant, DenseSpectrum, FnSpectrum};
 use speclab::{
-    BoxAverage, Center, HeroSample, LinearSrgb, RegularSpectrum, Role, Spectrum, TabulatedSpectrum, Xyz,
+    BoxAverage, Center, HeroSample, LinearRgb, RegularSpectrum, Role, Spectrum, TabulatedSpectrum, Xyz,
 };
 
 /// Rounding only.
@@ -48,9 +46,8 @@ fn a_closure_is_integrated_like_the_table_it_computes() {
     for (a, b) in boxed.values().iter().zip(table.values()) {
         assert!((a - b).abs() <= ROUNDING, "{a} vs {b}");
     }
-    let n = NonZeroUsize::new(64).unwrap();
     let estimate =
-        |s: &dyn Spectrum| hero::estimate::<4, _>(&lights::F11, &s, n, &mut StdRng::seed_from_u64(3));
+        |s: &dyn Spectrum| crate::hero_mean::<4>(&lights::F11, s, 64, &mut StdRng::seed_from_u64(3));
     assert_eq!(estimate(&g4), estimate(&patches::G4), "same wavelengths, same values: the same estimate");
 }
 
@@ -70,7 +67,7 @@ fn a_constant_integrates_exactly() {
 #[test]
 fn smooth_spectra_by_quadrature() {
     let sun = Blackbody::new(5778.0).unwrap();
-    let orange = RgbAlbedo::new(LinearSrgb::new(0.8, 0.35, 0.05)).unwrap();
+    let orange = RgbAlbedo::new(LinearRgb::new(0.8, 0.35, 0.05)).unwrap();
     let h = 0.002;
     let midpoint = |l: &dyn Spectrum, s: &dyn Spectrum| {
         (0..175_000)
@@ -93,17 +90,12 @@ fn mixed_spectra_in_a_list() {
     let list: Vec<Box<dyn Spectrum + Send + Sync>> = vec![
         Box::new(patches::F4.clone()),
         Box::new(DenseSpectrum::new(&patches::F4)),
-        Box::new(RgbAlbedo::new(LinearSrgb::new(0.1, 0.4, 0.1)).unwrap()),
+        Box::new(RgbAlbedo::new(LinearRgb::new(0.1, 0.4, 0.1)).unwrap()),
     ];
     let exact = reference::xyz(&lights::D65, &patches::F4);
     for s in &list {
         let xyz = reference::xyz(&lights::D65, s);
-        let estimate = hero::estimate::<4, _>(
-            &lights::D65,
-            s,
-            NonZeroUsize::new(256).unwrap(),
-            &mut StdRng::seed_from_u64(1),
-        );
+        let estimate = crate::hero_mean::<4>(&lights::D65, s, 256, &mut StdRng::seed_from_u64(1));
         let buckets = (RegularSpectrum::<32>::center(&lights::D65) * RegularSpectrum::center(s)).to_xyz();
         assert!((estimate.y - xyz.y).abs() < 0.02 * xyz.y && (buckets.y - xyz.y).abs() < 0.02 * xyz.y);
     }

@@ -9,11 +9,11 @@ use speclab::color::space::RgbSpace;
 use speclab::color::{LinearRgb, RgbAlbedo, RgbIlluminant, RgbUnbounded};
 use speclab::spectrum::SigmoidPolynomial;
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
-use speclab::{Error, LinearSrgb, Spectrum};
+use speclab::{Error, Spectrum};
 
 /// ΔE00 of the round trip of `rgb` through `albedo` (its colour under the
 /// space's illuminant, `rgb_of`), in CIELAB relative to the space's white.
-fn round_trip(rgb: LinearSrgb, albedo: &RgbAlbedo) -> f64 {
+fn round_trip(rgb: LinearRgb, albedo: &RgbAlbedo) -> f64 {
     let space = RgbSpace::srgb();
     speclab::color::difference::delta_e00(space.xyz(space.rgb_of(albedo)), space.xyz(rgb), space.white())
 }
@@ -22,11 +22,11 @@ fn round_trip(rgb: LinearSrgb, albedo: &RgbAlbedo) -> f64 {
 /// [0, 1]³ (measured: at most 1.6e-7, at (1, 0, 0)).
 #[test]
 fn round_trip_within_a_hundredth_over_a_grid() {
-    let mut worst = (0.0f64, LinearSrgb::default());
+    let mut worst = (0.0f64, LinearRgb::default());
     for r in 0..=16 {
         for g in 0..=16 {
             for b in 0..=16 {
-                let rgb = LinearSrgb::new(f64::from(r), f64::from(g), f64::from(b)) / 16.0;
+                let rgb = LinearRgb::new(f64::from(r), f64::from(g), f64::from(b)) / 16.0;
                 let de = round_trip(rgb, &RgbAlbedo::new(rgb).expect("in [0, 1]"));
                 if de > worst.0 {
                     worst = (de, rgb);
@@ -41,10 +41,10 @@ fn round_trip_within_a_hundredth_over_a_grid() {
 #[test]
 fn black_white_and_greys_are_constants() {
     let space = RgbSpace::srgb();
-    assert_eq!(RgbAlbedo::new(LinearSrgb::splat(0.0)).unwrap().polynomial(), SigmoidPolynomial::BLACK);
-    assert_eq!(RgbAlbedo::new(LinearSrgb::splat(1.0)).unwrap().polynomial(), SigmoidPolynomial::WHITE);
+    assert_eq!(RgbAlbedo::new(LinearRgb::splat(0.0)).unwrap().polynomial(), SigmoidPolynomial::BLACK);
+    assert_eq!(RgbAlbedo::new(LinearRgb::splat(1.0)).unwrap().polynomial(), SigmoidPolynomial::WHITE);
     for v in [0.01, 0.18, 0.5, 0.99] {
-        let grey = RgbAlbedo::new(LinearSrgb::splat(v)).unwrap();
+        let grey = RgbAlbedo::new(LinearRgb::splat(v)).unwrap();
         for l in [380.0, 555.0, 730.0] {
             assert!((grey.eval(l) - v).abs() < 1e-12, "{v} at {l}: {}", grey.eval(l));
         }
@@ -53,18 +53,17 @@ fn black_white_and_greys_are_constants() {
     // (1, 1, 1) is the space's white: the perfect reflector.
     assert!(space.rgb(space.white()).distance(LinearRgb::splat(1.0)) < 1e-12);
     assert!(
-        space.rgb_of(&RgbAlbedo::new(LinearSrgb::splat(1.0)).unwrap()).distance(LinearRgb::splat(1.0))
-            < 1e-12
+        space.rgb_of(&RgbAlbedo::new(LinearRgb::splat(1.0)).unwrap()).distance(LinearRgb::splat(1.0)) < 1e-12
     );
 }
 
 #[test]
 fn colours_outside_the_albedo_cube_are_errors() {
     for bad in [[1.5, 0.0, 0.0], [-0.1, 0.5, 0.5], [f64::NAN, 0.0, 0.0], [0.0, 0.0, f64::INFINITY]] {
-        let err = RgbAlbedo::new(LinearSrgb::from(bad)).unwrap_err();
+        let err = RgbAlbedo::new(LinearRgb::from(bad)).unwrap_err();
         assert!(matches!(err, Error::Albedo { .. }), "{bad:?}");
         assert!(err.to_string().starts_with("expected linear sRGB components in [0, 1], found"), "{err}");
-        assert!(RgbTable::fit(RgbSpace::srgb(), 4).albedo(LinearSrgb::from(bad)).is_err());
+        assert!(RgbTable::fit(RgbSpace::srgb(), 4).albedo(LinearRgb::from(bad)).is_err());
     }
 }
 
@@ -81,20 +80,20 @@ fn unbounded_colours_and_illuminants() {
         speclab::color::difference::delta_e00(space.xyz(a / scale), space.xyz(b / scale), space.white())
     };
     let rgb = LinearRgb::new(2.0, 0.5, 0.1);
-    let unbounded = RgbUnbounded::new(rgb.into());
+    let unbounded = RgbUnbounded::new(rgb);
     assert_eq!((unbounded, unbounded.scale()), (space.unbounded(rgb), 4.0));
     assert!(de(space.rgb_of(&unbounded), rgb, 4.0) < 0.05, "{:?}", space.rgb_of(&unbounded));
-    let clamped = RgbUnbounded::new(LinearSrgb::new(-1.0, f64::NAN, 0.5));
+    let clamped = RgbUnbounded::new(LinearRgb::new(-1.0, f64::NAN, 0.5));
     assert!(de(space.rgb_of(&clamped), LinearRgb::new(0.0, 0.0, 0.5), 1.0) < 0.05);
-    assert_eq!(RgbUnbounded::new(LinearSrgb::splat(0.0)).eval(500.0), 0.0);
-    let white = RgbIlluminant::new(LinearSrgb::splat(1.0));
+    assert_eq!(RgbUnbounded::new(LinearRgb::splat(0.0)).eval(500.0), 0.0);
+    let white = RgbIlluminant::new(LinearRgb::splat(1.0));
     let y = speclab::sampling::reference::white(&white).y;
     assert!((y - Y_BAR_INTEGRAL).abs() < 1e-9 * y, "{y} vs {Y_BAR_INTEGRAL}");
     assert!(std::ptr::eq(white.illuminant(), space.illuminant()));
     // An illuminant's colour is twice its largest component times its
     // albedo's under the illuminant (exactly), and that is its rgb.
     let rgb = LinearRgb::new(1.0, 0.6, 0.2);
-    let light = RgbIlluminant::new(rgb.into());
+    let light = RgbIlluminant::new(rgb);
     let emitted = speclab::sampling::reference::white(&light) / Y_BAR_INTEGRAL;
     let albedo = RgbAlbedo::from_polynomial(light.polynomial());
     let expected = space.albedo_xyz(&albedo) * 2.0;
@@ -137,7 +136,7 @@ fn table_accuracy_between_nodes() {
     let mut de: Vec<f64> = (0..4000)
         .map(|i| {
             let v = (f64::from(i) * 0.618_033_988_7).fract();
-            let rgb = LinearSrgb::new(v, (v * 3.7).fract(), (v * 7.3).fract());
+            let rgb = LinearRgb::new(v, (v * 3.7).fract(), (v * 7.3).fract());
             round_trip(rgb, &table.albedo(rgb).unwrap())
         })
         .collect();
@@ -152,11 +151,10 @@ fn table_accuracy_between_nodes() {
 #[test]
 fn table_round_trip_on_a_grid() {
     let table = RgbTable::SRGB;
-    let mut worst = (0.0f64, LinearSrgb::splat(0.0));
+    let mut worst = (0.0f64, LinearRgb::splat(0.0));
     let mut sum = 0.0;
     for i in 0..729 {
-        let rgb =
-            LinearSrgb::new(f64::from(i / 81) / 8.0, f64::from(i / 9 % 9) / 8.0, f64::from(i % 9) / 8.0);
+        let rgb = LinearRgb::new(f64::from(i / 81) / 8.0, f64::from(i / 9 % 9) / 8.0, f64::from(i % 9) / 8.0);
         let de = round_trip(rgb, &table.albedo(rgb).unwrap());
         sum += de;
         if de > worst.0 {
@@ -180,7 +178,7 @@ proptest! {
     /// more anywhere in 300–800 nm.
     #[test]
     fn albedos_stay_within_zero_and_one(r in 0.0..=1.0f64, g in 0.0..=1.0f64, b in 0.0..=1.0f64, lambda in 300.0..800.0f64) {
-        let albedo = RgbAlbedo::new(LinearSrgb::new(r, g, b)).expect("in [0, 1]");
+        let albedo = RgbAlbedo::new(LinearRgb::new(r, g, b)).expect("in [0, 1]");
         for l in (0..=350).map(|i| 380.0 + f64::from(i)).chain([lambda]) {
             let v = albedo.eval(l);
             prop_assert!((0.0..=1.0).contains(&v), "{} at {}", v, l);

@@ -55,7 +55,7 @@ fn main() {
     let (dl, ds) = (DenseSpectrum::new(light), DenseSpectrum::new(surface));
     let materials: [Box<dyn Spectrum + Send + Sync>; 2] = [Box::new(dl.clone()), Box::new(ds.clone())];
     let [bl, bs] = materials;
-    let albedo = speclab::color::RgbAlbedo::new(speclab::LinearSrgb::new(0.2, 0.5, 0.1)).expect("in gamut");
+    let albedo = speclab::color::RgbAlbedo::new(speclab::LinearRgb::new(0.2, 0.5, 0.1)).expect("in gamut");
     let list = [
         kernels::Material::Table(dl.clone()),
         kernels::Material::Table(ds.clone()),

@@ -133,13 +133,13 @@ fn drawing(c: &mut Criterion) {
 /// A spectrum at a hero sample's 4 wavelengths, by kind of spectrum; making
 /// an RGB albedo.
 fn evaluating(c: &mut Criterion) {
-    use speclab::LinearSrgb;
+    use speclab::LinearRgb;
     use speclab::color::RgbAlbedo;
     use speclab::color::rgb_table::RgbTable;
     let h = HeroSample::<4>::new(0.3);
     let patch = &data::patches::H4;
     let dense = DenseSpectrum::new(patch);
-    let rgb = LinearSrgb::from([0.6, 0.3, 0.1]);
+    let rgb = LinearRgb::from([0.6, 0.3, 0.1]);
     let albedo = RgbAlbedo::new(rgb).expect("an albedo");
     let table = RgbTable::SRGB;
     let mut group = c.benchmark_group("a spectrum at 4 wavelengths");

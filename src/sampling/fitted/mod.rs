@@ -55,11 +55,6 @@ use crate::spectrum::{LAMBDA_MIN, Spectrum};
 /// its lights and of the prior's mean reflectance, relative (tested).
 pub const ANCHOR_TOLERANCE: f64 = 1e-3;
 
-/// The part of a fit that depends on the lights alone: now
-/// [`FittedRules`], whose `rule(m)` keeps each M it fits.
-#[deprecated(since = "0.2.0", note = "use `FittedRules::new(lights)` and `.rule(m)`")]
-pub type FitProblem = FittedRules;
-
 /// The lights of a list, as the fit takes them.
 fn as_dyn<S: Spectrum>(lights: &[S]) -> Vec<&dyn Spectrum> {
     lights.iter().map(|l| l as &dyn Spectrum).collect()

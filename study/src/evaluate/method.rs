@@ -50,12 +50,12 @@ use std::str::FromStr;
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
+use crate::sampling::choice::{ChosenPdf, Sampling};
+use crate::sampling::estimate::{self, USUAL_K};
 use speclab::color::Xyz;
 use speclab::error::Error;
 use speclab::sampling::buckets::BucketRule;
-use speclab::sampling::choice::{ChosenPdf, Sampling};
 use speclab::sampling::fitted::FittedRules;
-use speclab::sampling::hero::{self, USUAL_K};
 use speclab::sampling::pdf::WavelengthPdf;
 use speclab::sampling::rule::{MAX_M, Rule};
 use speclab::spectrum::{Spectrum, TabulatedSpectrum};
@@ -71,7 +71,7 @@ pub enum Method {
     /// Exact integration of the interpolants.
     Reference,
     /// n hero samples of `k` wavelengths each (`HeroSample<k>`, k from 1 to
-    /// [`hero::MAX_WIDTH`]); `k = 1` is the assignment's random sampling.
+    /// [`estimate::MAX_WIDTH`]); `k = 1` is the assignment's random sampling.
     Hero {
         /// Wavelengths per sample.
         k: usize,
@@ -244,7 +244,7 @@ impl Method {
 
     /// XYZ of `light × surface` by this method with `samples` samples or
     /// buckets. Errors for a hero width or a count out of range (1 to
-    /// [`hero::MAX_WIDTH`], 1 to [`MAX_M`]), and for a pdf that cannot
+    /// [`estimate::MAX_WIDTH`], 1 to [`MAX_M`]), and for a pdf that cannot
     /// follow the light.
     pub fn xyz(
         self,
@@ -351,9 +351,17 @@ impl Estimator<'_> {
                 let pdf = self.pdf.as_ref().ok_or(Error::NoMass)?;
                 // At depth 1 the surface itself: no product in the loop.
                 if depth == Depth::ONE {
-                    hero::estimate_width(k, light, surface, samples, pdf, sampling.strata, rng)?
+                    estimate::estimate_width(k, light, surface, samples, pdf, sampling.strata, rng)?
                 } else {
-                    hero::estimate_width(k, light, &depth.path(surface), samples, pdf, sampling.strata, rng)?
+                    estimate::estimate_width(
+                        k,
+                        light,
+                        &depth.path(surface),
+                        samples,
+                        pdf,
+                        sampling.strata,
+                        rng,
+                    )?
                 }
             }
             Method::Buckets { rule } => Rule::buckets(m, rule)?.xyz_of_product(factors),
@@ -376,5 +384,5 @@ impl Estimator<'_> {
 
 /// A seed for stream `stream` of a run seeded with `base`, so that cells
 /// and trials draw independent sequences: the core's
-/// [`speclab::sampling::seed::derive`].
-pub use speclab::sampling::seed::derive as derive_seed;
+/// [`crate::sampling::seed::derive`].
+pub use crate::sampling::seed::derive as derive_seed;

@@ -21,9 +21,9 @@ use std::path::PathBuf;
 use std::str::FromStr;
 use std::sync::{Arc, Mutex, OnceLock};
 
+use crate::sampling::choice::{ChosenPdf, PdfKind};
 use speclab::color::Xyz;
 use speclab::io::Load;
-use speclab::sampling::choice::{ChosenPdf, PdfKind};
 use speclab::sampling::fitted::FittedRules;
 use speclab::sampling::{PreparedLight, reference};
 use speclab::spectrum::data::{Light, Patch, SURFACE_NAMES, lights, surface_named};

@@ -8,7 +8,7 @@
 //!    it so the perfect white has Y = 100. `None` keeps Appendix 2
 //!    reproducible.
 //! 2. **Gamut.** A linear sRGB with a negative component is out of gamut:
-//!    see [`speclab::LinearSrgb::in_gamut`].
+//!    see [`speclab::LinearRgb::in_gamut`].
 //! 3. **White balance.** [`white_balance`] applies a Bradford adaptation
 //!    ([`speclab::color::adaptation`]) from the light's white to D65's before
 //!    the conversion to sRGB, so a neutral patch looks neutral.

@@ -34,11 +34,11 @@ use crate::evaluate::method::Method;
 use crate::evaluate::perceptual;
 use crate::evaluate::scene::{Depth, Named};
 use crate::evaluate::viewing::Viewing;
+use crate::sampling::choice::Sampling;
+use crate::sampling::estimate::USUAL_K;
 use crate::{evaluate::trials, experiments::texture};
-use speclab::color::LinearSrgb;
+use speclab::color::LinearRgb;
 use speclab::sampling::buckets::BucketRule;
-use speclab::sampling::choice::Sampling;
-use speclab::sampling::hero::USUAL_K;
 
 /// What to compare, and how.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -79,7 +79,7 @@ pub struct Line {
     /// Wavelengths evaluated per estimate.
     pub evals: usize,
     /// One estimate, as linear sRGB (white-balanced if asked).
-    pub rgb: LinearSrgb,
+    pub rgb: LinearRgb,
     /// ΔE00 of that estimate to the reference.
     pub de00: f64,
     /// RMS ΔE00 over the trials (one trial for deterministic techniques).

@@ -11,7 +11,7 @@
 //! ```
 //! use std::num::NonZeroUsize;
 //! use speclab_study::experiments::convergence::{self, CONVERGENCE_MAX_N};
-//! use speclab::sampling::choice::Sampling;
+//! use speclab_study::sampling::choice::Sampling;
 //! use speclab_study::{evaluate::method::Method, evaluate::scene::{Choice, Depth}};
 //! use speclab::Role;
 //! let light = Choice::Name("D65".into()).resolve(Role::Light)?;
@@ -31,7 +31,7 @@ use crate::evaluate::method::Method;
 use crate::evaluate::scene::{Depth, Named};
 use crate::evaluate::trials::{self, Stats};
 use crate::experiments::threshold::{self, Crossing};
-use speclab::sampling::choice::Sampling;
+use crate::sampling::choice::Sampling;
 
 /// The methods a sequence studies with `samplings`, in order: random and
 /// hero with each sampling, then centre and box buckets and the fitted rule.

@@ -22,8 +22,8 @@ use std::num::NonZeroUsize;
 use crate::StudyError;
 use crate::evaluate::method::{Method, derive_seed};
 use crate::evaluate::scene::{Depth, Named};
+use crate::sampling::choice::Sampling;
 use speclab::color::Xyz;
-use speclab::sampling::choice::Sampling;
 
 /// What a grid run computes: its counts, seed and sampling.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -27,12 +27,12 @@ use crate::evaluate::scene::{Depth, Named};
 use crate::evaluate::trials;
 use crate::experiments::convergence::CONVERGENCE_MAX_N;
 use crate::published::rules::Family;
+use crate::sampling::choice::{PdfKind, Sampling};
+use crate::sampling::strata::Strata;
 use speclab::sampling::buckets::BucketRule;
-use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::fitted::FittedRules;
 use speclab::sampling::reference;
 use speclab::sampling::rule::{MAX_M, Rule};
-use speclab::sampling::strata::Strata;
 use speclab::spectrum::Spectrum;
 
 /// The worst ΔE00 over the surfaces of each fixed rule at one M.

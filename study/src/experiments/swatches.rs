@@ -47,13 +47,13 @@ use crate::StudyError;
 use crate::evaluate::method::{Estimator, Method, derive_seed};
 use crate::evaluate::scene::Named;
 use crate::evaluate::viewing;
+use crate::sampling::choice::{PdfKind, Sampling};
+use crate::sampling::strata::Strata;
 use speclab::color::Xyz;
 use speclab::color::adaptation::bradford;
-use speclab::color::display::{Display, Exposure, GamutMap, Srgb8};
+use speclab::color::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use speclab::sampling::buckets::BucketRule;
-use speclab::sampling::choice::{PdfKind, Sampling};
 use speclab::sampling::reference;
-use speclab::sampling::strata::Strata;
 use speclab::spectrum::TabulatedSpectrum;
 
 /// The largest swatch side [`render`] draws.
@@ -187,7 +187,7 @@ impl Swatches {
 #[derive(Clone, Copy, Debug)]
 struct Look {
     balance: Option<(Xyz, Xyz)>,
-    display: Display,
+    display: PixelPipeline,
 }
 
 impl Look {
@@ -195,7 +195,7 @@ impl Look {
         let white = reference::white(light);
         let balance = s.white_balance.then(|| (white, viewing::target_white(light)));
         let white = balance.map_or(white, |(_, target)| target);
-        Look { balance, display: Display::new(Exposure::fit_white(white), s.gamut) }
+        Look { balance, display: PixelPipeline::new(Exposure::fit_white(white), s.gamut) }
     }
 
     fn pixel(&self, xyz: Xyz) -> Srgb8 {

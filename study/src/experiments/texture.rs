@@ -22,14 +22,14 @@ use crate::evaluate::method::Method;
 use crate::evaluate::perceptual;
 use crate::evaluate::scene::Named;
 use crate::evaluate::trials;
-use speclab::color::LinearSrgb;
+use crate::sampling::choice::{PdfKind, Sampling};
+use crate::sampling::estimate::USUAL_K;
+use crate::sampling::strata::Strata;
+use speclab::color::LinearRgb;
 use speclab::color::RgbAlbedo;
 use speclab::color::upsample::RgbSpace;
 use speclab::sampling::buckets::BucketRule;
-use speclab::sampling::choice::{PdfKind, Sampling};
-use speclab::sampling::hero::USUAL_K;
 use speclab::sampling::reference;
-use speclab::sampling::strata::Strata;
 
 /// The sampling the texture's error is set beside.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -59,7 +59,7 @@ pub struct TextureRow {
     /// The surface's name.
     pub surface: String,
     /// The texture: the surface's linear sRGB under D65, clipped to [0, 1].
-    pub rgb: LinearSrgb,
+    pub rgb: LinearRgb,
     /// True if clipping changed the colour (the surface is outside sRGB).
     pub clipped: bool,
     /// ΔE00 of the texture's exact colour to the measured spectrum's.
@@ -74,8 +74,8 @@ pub struct TextureRow {
 
 /// The texture of `surface`: its colour under D65, clipped into [0, 1], and
 /// whether clipping changed it.
-pub fn texture(surface: &Named) -> Result<(LinearSrgb, RgbAlbedo, bool), StudyError> {
-    let measured = LinearSrgb::from(RgbSpace::srgb().rgb_of(&surface.spectrum));
+pub fn texture(surface: &Named) -> Result<(LinearRgb, RgbAlbedo, bool), StudyError> {
+    let measured = RgbSpace::srgb().rgb_of(&surface.spectrum);
     let rgb = measured.map(|v| v.clamp(0.0, 1.0));
     Ok((rgb, RgbAlbedo::new(rgb)?, rgb != measured))
 }

@@ -24,8 +24,8 @@ use crate::evaluate::method::Method;
 use crate::evaluate::scene::{Depth, Named};
 use crate::evaluate::trials;
 use crate::planning::cost::{self, Config, Cost};
-use speclab::sampling::choice::{PdfKind, Sampling};
-use speclab::sampling::strata::Strata;
+use crate::sampling::choice::{PdfKind, Sampling};
+use crate::sampling::strata::Strata;
 
 /// The largest n charted for random and hero.
 pub const CHART_MAX_N: usize = 1024;

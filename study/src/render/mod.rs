@@ -1,7 +1,7 @@
 //! A small path tracer over the core's renderer API, and what it measures:
 //! a box of ColorChecker walls and spheres with an RGB-textured back wall,
 //! lit by one or two lights in the ceiling, colour carried four ways
-//! (the core's [`speclab::carry`]: hero wavelengths, a fitted rule, RGB
+//! ([`crate::carry`]: hero wavelengths, a fitted rule, RGB
 //! triples; and [`ways::Prefilter`], spectrally prefiltered triples), each
 //! against the exact image of its own paths.
 //!
@@ -36,17 +36,17 @@ pub mod ways;
 
 use std::time::Instant;
 
+use crate::carry::Carry;
+use crate::sampling::choice::Sampling;
+use crate::sampling::seed::mix;
+use crate::sampling::strata::Strata;
 use rayon::prelude::*;
-use speclab::carry::Carry;
 use speclab::color::RgbAlbedo;
 use speclab::color::upsample::RgbSpace;
 use speclab::data::Patch;
 use speclab::named_choices;
-use speclab::sampling::choice::Sampling;
 use speclab::sampling::reference;
-use speclab::sampling::seed::mix;
-use speclab::sampling::strata::Strata;
-use speclab::{LinearSrgb, TabulatedSpectrum, Xyz};
+use speclab::{LinearRgb, TabulatedSpectrum, Xyz};
 
 use crate::evaluate::Named;
 use exact::{ExactScene, PathRecord};
@@ -130,7 +130,7 @@ pub struct Setup {
     /// The six patches.
     pub patches: Vec<TabulatedSpectrum>,
     /// The texels' colours.
-    pub colours: Vec<LinearSrgb>,
+    pub colours: Vec<LinearRgb>,
     /// The texels as spectra.
     pub texture: Vec<RgbAlbedo>,
     /// The grey baseline.
@@ -202,21 +202,20 @@ fn scene(lights: usize) -> Scene {
 }
 
 /// The back wall's 8 × 8 texels: a hue circle across, lightness down.
-fn texture_colours() -> Vec<LinearSrgb> {
+fn texture_colours() -> Vec<LinearRgb> {
     let hue = |h: f64| [0.0, 2.0, 4.0].map(|o: f64| ((h * 6.0 + o) % 6.0 - 3.0).abs().clamp(1.0, 2.0) - 1.0);
     (0..tracer::TEXELS)
         .map(|t| {
             let (column, row) = (t / 8, t % 8);
             let lightness = 0.15 + 0.8 * (7 - row) as f64 / 7.0;
-            LinearSrgb::from(hue(column as f64 / 8.0).map(|c| lightness * (0.25 + 0.75 * c)))
+            LinearRgb::from(hue(column as f64 / 8.0).map(|c| lightness * (0.25 + 0.75 * c)))
         })
         .collect()
 }
 
 /// A pixel's seed: SplitMix64's finaliser of the pass and the pixel.
 fn seed(pass: u64, pixel: usize) -> u64 {
-    mix(pass.wrapping_mul(speclab::sampling::seed::GOLDEN)
-        ^ (pixel as u64).wrapping_add(0xD1B5_4A32_D192_ED03))
+    mix(pass.wrapping_mul(crate::sampling::seed::GOLDEN) ^ (pixel as u64).wrapping_add(0xD1B5_4A32_D192_ED03))
         | 1
 }
 

@@ -5,13 +5,14 @@
 
 use std::time::Instant;
 
-use speclab::carry::{Carry, Fitted, Hero, Lanes, Rgb, with_lanes};
+use crate::carry::{Carry, Fitted, Hero, Rgb};
+use crate::sampling::choice::PdfKind;
 use speclab::color::lab::lab;
 use speclab::color::{LinearRgb, RgbSpace};
 use speclab::sampling::binned::BinnedPdf;
-use speclab::sampling::choice::PdfKind;
 use speclab::sampling::pdf::WavelengthPdf;
 use speclab::sampling::rule::Rule;
+use speclab::sampling::{AtWidth, with_lanes};
 use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Float, Mixture, Observer, Spectrum};
 use speclab::{TabulatedSpectrum, Xyz};
 
@@ -49,7 +50,7 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
     match o.way {
         Way::Rgb => {
             let mut rgb = Rgb::new(&setup.light_spectra(), &setup.patches);
-            rgb.surfaces.extend(setup.colours.iter().map(|&c| LinearRgb::from(c)));
+            rgb.surfaces.extend(setup.colours.iter().copied());
             Ok(with.go(&rgb))
         }
         Way::Prefilter => {
@@ -60,7 +61,7 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
         }
         Way::Fitted => {
             let rules = Rule::fit_each(&setup.light_spectra(), o.m)?;
-            with_lanes(o.m, FittedLanes { rules: &rules, setup, single: o.single, with })?
+            with_lanes(o.m, FittedWidth { rules: &rules, setup, single: o.single, with })?
         }
         Way::Hero => {
             let pdf = wavelength_pdf(o, setup)?;
@@ -127,14 +128,14 @@ pub fn hero<S: Spectrum, O: Observer, T: Float>(
 
 /// The fitted rules at the compiled width that holds them, in `f32` or
 /// `f64`, handed on.
-struct FittedLanes<'a, W> {
+struct FittedWidth<'a, W> {
     rules: &'a [Rule],
     setup: &'a Setup,
     single: bool,
     with: W,
 }
 
-impl<W: WithCarry> Lanes for FittedLanes<'_, W> {
+impl<W: WithCarry> AtWidth for FittedWidth<'_, W> {
     type Output = Result<W::Out, speclab::Error>;
 
     fn call<const CAP: usize>(self) -> Self::Output {

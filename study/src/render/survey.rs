@@ -13,11 +13,11 @@
 //! # Ok::<(), String>(())
 //! ```
 
+use crate::carry::Carry;
+use crate::sampling::choice::{PdfKind, Sampling};
+use crate::sampling::strata::Strata;
 use speclab::Xyz;
-use speclab::carry::Carry;
 use speclab::data::Light;
-use speclab::sampling::choice::{PdfKind, Sampling};
-use speclab::sampling::strata::Strata;
 use speclab::spectrum::Cie1931;
 
 use crate::evaluate::Named;

@@ -11,8 +11,8 @@
 //! and each light it saw with the scalar factor it came with), for the
 //! exact colour of the same path.
 
+use crate::carry::Carry;
 use speclab::Xyz;
-use speclab::carry::Carry;
 
 /// The deepest path the tracer follows.
 pub const MAX_DEPTH: usize = 16;

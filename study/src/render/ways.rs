@@ -4,8 +4,8 @@
 //! the baseline colour's share of the time is measured against, and
 //! [`Prefilter`], Ward's spectral prefiltering as a way to carry colour.
 
+use crate::carry::Carry;
 use speclab::Xyz;
-use speclab::carry::Carry;
 use speclab::color::{LinearRgb, RgbAlbedo, RgbSpace};
 use speclab::sampling::reference;
 

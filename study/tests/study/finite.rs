@@ -83,3 +83,29 @@ fn study(l: &TabulatedSpectrum, s: &TabulatedSpectrum, seed: u64) -> Result<(), 
     }
     Ok(())
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Any hero width and any number of points: a width outside
+    /// 1..=`MAX_WIDTH` is an error, never a panic; every strata gives `n`
+    /// numbers in [0, 1) for any width.
+    #[test]
+    fn widths_and_strata_take_anything(n in 0..50usize, k in 0..6usize, seed in any::<u64>()) {
+        use rand::SeedableRng;
+        use speclab::data::{lights, patches};
+        use speclab_study::sampling::estimate::{MAX_WIDTH, estimate_width};
+        use speclab_study::sampling::strata::Strata;
+        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
+        for width in [0, 1, 4, 5, MAX_WIDTH, MAX_WIDTH + 1, usize::MAX] {
+            let (pdf, strata) = (speclab::sampling::pdf::Uniform, Strata::None);
+            let result = estimate_width(width, &lights::A, &patches::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
+            prop_assert_eq!(result.is_ok(), (1..=MAX_WIDTH).contains(&width));
+        }
+        for strata in Strata::ALL {
+            let points: Vec<f64> = strata.points(n, k, &mut rng).collect();
+            prop_assert_eq!(points.len(), n);
+            prop_assert!(points.iter().all(|u| (0.0..1.0).contains(u)));
+        }
+    }
+}

@@ -2,6 +2,7 @@
 //! statistics in units of their standard error (unbiasedness, stability
 //! where each method fails), thread safety, names, finite numbers.
 
+mod carry;
 mod depth;
 mod finite;
 mod names;

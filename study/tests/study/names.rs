@@ -8,6 +8,8 @@ use speclab::Error;
 use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::viewing::Normalization;
 use speclab_study::render::Way;
+use speclab_study::sampling::choice::PdfKind;
+use speclab_study::sampling::strata::Strata;
 
 /// Every choice's name reads back as the choice, in any case; names are
 /// distinct; an unknown name lists them all.
@@ -50,4 +52,18 @@ fn study_choices() {
     let methods = ["reference", "random", "hero", "regular-center", "regular-box", "fitted"];
     assert_eq!(Method::NAMES, methods);
     round_trip(&Way::ALL, &["hero", "fitted", "rgb", "prefilter"], "a way to carry colour");
+}
+
+/// The message in full, for one list.
+#[test]
+fn strata_error() {
+    let err = "nonsense".parse::<Strata>().unwrap_err().to_string();
+    assert_eq!(err, "expected a strata (none, jitter or kronecker), found \"nonsense\"");
+}
+
+/// The sampling choices the command lines take.
+#[test]
+fn sampling_choices() {
+    round_trip(&Strata::ALL, &["none", "jitter", "kronecker"], "a strata");
+    round_trip(&PdfKind::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
 }

@@ -9,14 +9,14 @@
 
 use std::num::NonZeroUsize;
 
-use speclab::sampling::choice::{PdfKind, Sampling};
-use speclab::sampling::strata::Strata;
 use speclab_study::StudyError;
 use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::scene::{Named, builtin_lights, builtin_surfaces};
 use speclab_study::evaluate::trials;
 use speclab_study::planning::cost::{Config, Cost};
 use speclab_study::planning::plan::{self, Request, Verdict};
+use speclab_study::sampling::choice::{PdfKind, Sampling};
+use speclab_study::sampling::strata::Strata;
 
 fn request(seed: u64) -> Request {
     Request { seed, ..Request::default() }

@@ -6,10 +6,10 @@
 
 use speclab::TabulatedSpectrum;
 use speclab::data::Light;
-use speclab::sampling::choice::{ChosenPdf, PdfKind};
 use speclab_study::evaluate::Named;
 use speclab_study::evaluate::scene::{builtin_lights, builtin_surfaces};
 use speclab_study::experiments::grid::{GridOptions, GridRow};
+use speclab_study::sampling::choice::{ChosenPdf, PdfKind};
 use static_assertions::assert_impl_all;
 
 assert_impl_all!(TabulatedSpectrum: Send, Sync);

@@ -60,7 +60,7 @@ fn mean_sd(xs: impl Iterator<Item = f64> + Clone) -> (f64, f64) {
 /// correct estimator fails one at 4.5σ with probability about 1 %; the
 /// seeds are fixed).
 fn sweep(cells: &[(Light, Patch)]) {
-    use speclab::sampling::choice::Sampling;
+    use speclab_study::sampling::choice::Sampling;
     let n = NonZeroUsize::new(N).expect("N > 0");
     let mut worst = (0.0f64, String::new());
     for sampling in Sampling::all() {

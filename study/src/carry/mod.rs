@@ -1,6 +1,7 @@
 //! How a renderer carries colour along its paths: one interface,
 //! [`Carry`], over three ways of doing it, and the step from a rule size
-//! chosen at run time to compile-time lanes ([`with_lanes`]).
+//! chosen at run time to compile-time lanes
+//! ([`speclab::sampling::with_lanes`]).
 //!
 //! A path tracer keeps a throughput β from the camera and adds what each
 //! light contributes through it. What β *is* depends on the way colour is
@@ -19,7 +20,7 @@
 //! construction. Lights and surfaces are numbered in the order given.
 //!
 //! ```
-//! use speclab::carry::{Carry, Fitted, Hero, Rgb};
+//! use speclab_study::carry::{Carry, Fitted, Hero, Rgb};
 //! use speclab::data::{lights, patches};
 //! use speclab::sampling::{pdf::Uniform, reference, rule::Rule};
 //! use speclab::spectrum::DenseObserver;
@@ -44,15 +45,13 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
-mod lanes;
 mod ways;
 
-pub use lanes::{LANES, Lanes, with_lanes};
 pub use ways::{Fitted, Hero, Rgb};
 
 use std::ops::{Mul, MulAssign};
 
-use crate::color::Xyz;
+use speclab::Xyz;
 
 /// A way of carrying colour along a path: what a path keeps (its
 /// wavelengths, or nothing), what a throughput is, and how a light's

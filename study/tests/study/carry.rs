@@ -1,8 +1,7 @@
-//! The ways of carrying colour along a path (`speclab::carry`) are what
+//! The ways of carrying colour along a path (`speclab_study::carry`) are what
 //! they say: each method against the per-sample calls it stands for, and a
 //! one-bounce path against the exact colour.
 
-use speclab::carry::{Carry, Fitted, Hero, Rgb};
 use speclab::color::LinearRgb;
 use speclab::color::upsample::RgbSpace;
 use speclab::data::{lights, patches};
@@ -11,6 +10,7 @@ use speclab::sampling::{HeroSample, reference, rule::Rule};
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
 use speclab::spectrum::{Cie1931, DenseObserver, SampledSpectrum};
 use speclab::{TabulatedSpectrum, Xyz};
+use speclab_study::carry::{Carry, Fitted, Hero, Rgb};
 
 fn close(a: Xyz, b: Xyz, tolerance: f64) -> bool {
     (a - b).to_array().iter().all(|d| d.abs() <= tolerance * b.y.abs().max(1e-300))

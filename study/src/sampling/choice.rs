@@ -6,8 +6,9 @@
 //!
 //! ```
 //! use speclab::data::lights;
-//! use speclab::sampling::choice::{PdfKind, Sampling};
-//! use speclab::sampling::{pdf::WavelengthPdf, strata::Strata, HeroSample};
+//! use speclab_study::sampling::choice::{PdfKind, Sampling};
+//! use speclab::sampling::{pdf::WavelengthPdf, HeroSample};
+//! use speclab_study::sampling::strata::Strata;
 //! let s = Sampling { pdf: PdfKind::Light, strata: Strata::Jittered };
 //! assert_eq!(s.to_string(), "light/jitter");
 //! assert_eq!("balanced".parse::<PdfKind>()?, PdfKind::Balanced);
@@ -21,11 +22,11 @@
 use std::fmt;
 use std::sync::Arc;
 
-use crate::error::Error;
-use crate::named_choices;
-use crate::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 use crate::sampling::strata::Strata;
-use crate::spectrum::Spectrum;
+use speclab::Error;
+use speclab::Spectrum;
+use speclab::named_choices;
+use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 
 /// Which density wavelengths are drawn from.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

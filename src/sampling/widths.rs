@@ -4,19 +4,19 @@
 //! (`SampledSpectrum<M, T>`), so that they live in registers; a scene's
 //! fitted rule has a size M chosen at run time (by a plan, a budget, a
 //! command line). [`with_lanes`] bridges the two: it calls back with the
-//! smallest compiled width of [`LANES`] that holds M, each width
+//! smallest compiled width of [`WIDTHS`] that holds M, each width
 //! monomorphised once. The lanes beyond M weigh nothing
 //! ([`Rule::wavelengths`](crate::sampling::rule::Rule::wavelengths) pads
 //! them), so they change no colour.
 //!
 //! ```
-//! use speclab::carry::{Lanes, with_lanes};
+//! use speclab::sampling::{AtWidth, with_lanes};
 //! use speclab::data::{lights, patches};
 //! use speclab::sampling::rule::Rule;
 //!
 //! /// The colour of G4 under F11 by a rule of `self.0`'s size.
 //! struct Colour<'a>(&'a Rule);
-//! impl Lanes for Colour<'_> {
+//! impl AtWidth for Colour<'_> {
 //!     type Output = Result<speclab::Xyz, speclab::Error>;
 //!     fn call<const CAP: usize>(self) -> Self::Output {
 //!         let at = self.0.wavelengths::<CAP, f32>()?;
@@ -36,10 +36,10 @@ use crate::sampling::rule::MAX_M;
 
 /// The compiled widths, smallest first: multiples of four (a 128-bit
 /// register of `f32`) up to 16, then 24, 32 and [`MAX_M`].
-pub const LANES: [usize; 7] = [4, 8, 12, 16, 24, 32, MAX_M];
+pub const WIDTHS: [usize; 7] = [4, 8, 12, 16, 24, 32, MAX_M];
 
 /// Something done at a compile-time width: a callback for [`with_lanes`].
-pub trait Lanes {
+pub trait AtWidth {
     /// What it returns.
     type Output;
 
@@ -47,9 +47,9 @@ pub trait Lanes {
     fn call<const CAP: usize>(self) -> Self::Output;
 }
 
-/// Calls `f` with the smallest width of [`LANES`] that holds `m`
+/// Calls `f` with the smallest width of [`WIDTHS`] that holds `m`
 /// wavelengths. An [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`].
-pub fn with_lanes<F: Lanes>(m: usize, f: F) -> Result<F::Output, Error> {
+pub fn with_lanes<F: AtWidth>(m: usize, f: F) -> Result<F::Output, Error> {
     macro_rules! widths {
         ($($cap:literal)*) => {
             $(if m <= $cap {
@@ -66,11 +66,11 @@ pub fn with_lanes<F: Lanes>(m: usize, f: F) -> Result<F::Output, Error> {
 
 #[cfg(test)]
 mod tests {
-    use super::{LANES, Lanes, with_lanes};
+    use super::{AtWidth, WIDTHS, with_lanes};
 
     /// Reports the width it ran with.
     struct Width;
-    impl Lanes for Width {
+    impl AtWidth for Width {
         type Output = usize;
         fn call<const CAP: usize>(self) -> usize {
             CAP
@@ -81,10 +81,10 @@ mod tests {
     #[test]
     fn each_size_gets_the_smallest_width_that_holds_it() {
         for m in 1..=64 {
-            let expected = LANES.into_iter().find(|&w| w >= m);
+            let expected = WIDTHS.into_iter().find(|&w| w >= m);
             assert_eq!(with_lanes(m, Width).ok(), expected, "m = {m}");
         }
         assert!(with_lanes(0, Width).is_err() && with_lanes(65, Width).is_err());
-        assert_eq!(LANES.last(), Some(&64));
+        assert_eq!(WIDTHS.last(), Some(&64));
     }
 }

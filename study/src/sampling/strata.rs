@@ -13,14 +13,13 @@
 //! either way.) Every number is uniform on its range on its own, so every
 //! estimate stays unbiased.
 //!
-//! A renderer with its own sampler (Sobol', blue noise, …) calls
-//! [`Strata::point`] with the sample's index and its own uniform number: no
-//! random-number generator is involved. [`Strata::points`] draws the
+//! [`Strata::point`] takes a sample's index and a uniform number (the path
+//! tracer's own): no random-number generator is involved. [`Strata::points`] draws the
 //! uniform numbers from an `Rng` (the `rand` re-exported as
 //! `speclab::rand`) for a whole estimate.
 //!
 //! ```
-//! use speclab::sampling::strata::Strata;
+//! use speclab_study::sampling::strata::Strata;
 //! // Sample 2 of 4, from the renderer's own number 0.5: the middle of stratum 2.
 //! assert_eq!(Strata::Jittered.point(2, 4, 1, 0.5), 0.625);
 //! // Hero samples of 4 wavelengths: the same stratum of [0, 1/4).
@@ -32,7 +31,7 @@
 
 use rand::{Rng, RngExt};
 
-use crate::named_choices;
+use speclab::named_choices;
 
 /// How an estimate's primary numbers are spread.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -80,28 +79,6 @@ impl Strata {
         (v * scale).min(scale * (1.0 - f64::EPSILON))
     }
 
-    /// [`Strata::point`] for a renderer computing in `f32`: its number
-    /// and the primary number in `f32` (the index arithmetic in `f64`,
-    /// rounded to `f32` and stepped down one ulp where that rounding went
-    /// up, so that it stays below the top of its range in `f32` too).
-    ///
-    /// ```
-    /// use speclab::{sampling::strata::Strata, HeroSample};
-    /// let u: f32 = Strata::Jittered.point_f32(3, 16, 4, 0.5_f32);
-    /// assert_eq!(u, 3.5 / 64.0); // exact in f32: kept as it is
-    /// let top = Strata::Jittered.point_f32(15, 16, 1, 1.0 - f32::EPSILON / 2.0);
-    /// assert!(top < 1.0);
-    /// let h = HeroSample::<4, f32>::new(u);
-    /// # let _ = h;
-    /// ```
-    #[must_use]
-    pub fn point_f32(self, i: usize, n: usize, k: usize, u: f32) -> f32 {
-        let v = self.point(i, n, k, f64::from(u));
-        let r = v as f32;
-        // Rounded to the nearest, v may have gone up to the top: step down.
-        if f64::from(r) > v { r.next_down() } else { r }
-    }
-
     /// The `n` primary numbers of one estimate made of samples of `k`
     /// wavelengths, their uniform numbers drawn from `rng` as they are
     /// needed ([`Strata::point`] of each).
@@ -142,32 +119,5 @@ impl<R: Rng + ?Sized> Iterator for Points<'_, R> {
     fn size_hint(&self) -> (usize, Option<usize>) {
         let left = self.n - self.i;
         (left, Some(left))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::Strata;
-
-    /// `point_f32` is the largest `f32` not above `point`: below 1, and
-    /// the next `f32` up is above the `f64` point (rounding down where
-    /// nearest rounding went up, at the top of the range too).
-    #[test]
-    fn f32_points_round_down_to_below_one() {
-        let us = [0.0, 0.1, 0.333_333_34, 0.5, 0.9, 1.0 - f32::EPSILON / 2.0];
-        let mut rounded_up = 0;
-        for strata in [Strata::None, Strata::Jittered, Strata::Kronecker] {
-            for (n, k) in [(1, 1), (3, 4), (16, 4), (7, 3), (1000, 1)] {
-                for i in 0..n.min(40) {
-                    for &u in &us {
-                        let (p, r) = (strata.point(i, n, k, f64::from(u)), strata.point_f32(i, n, k, u));
-                        assert!((0.0..1.0).contains(&r), "{strata:?} {i}/{n} k {k} u {u}: {r}");
-                        assert!(f64::from(r) <= p && f64::from(r.next_up()) > p, "{p} → {r}");
-                        rounded_up += usize::from(f64::from(p as f32) > p);
-                    }
-                }
-            }
-        }
-        assert!(rounded_up > 0, "some points round up to the nearest f32");
     }
 }

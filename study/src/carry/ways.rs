@@ -3,15 +3,15 @@
 use std::marker::PhantomData;
 
 use crate::carry::Carry;
-use crate::color::space::RgbSpace;
-use crate::color::{LinearRgb, Xyz};
-use crate::error::Error;
-use crate::sampling::pdf::WavelengthPdf;
-use crate::sampling::reference;
-use crate::sampling::rule::Rule;
-use crate::sampling::{Emission, FixedWavelengths, HeroSample};
-use crate::spectrum::observer::Y_BAR_INTEGRAL;
-use crate::spectrum::{Float, Observer, SampledSpectrum, Spectrum};
+use speclab::color::space::RgbSpace;
+use speclab::color::{LinearRgb, Xyz};
+use speclab::error::Error;
+use speclab::sampling::pdf::WavelengthPdf;
+use speclab::sampling::reference;
+use speclab::sampling::rule::Rule;
+use speclab::sampling::{Emission, FixedWavelengths, HeroSample};
+use speclab::spectrum::observer::Y_BAR_INTEGRAL;
+use speclab::spectrum::{Float, Observer, SampledSpectrum, Spectrum};
 
 /// Hero wavelengths (K = 4) drawn per path from `pdf` and weighted by
 /// `observer`; the lights and surfaces evaluated at them at every vertex,
@@ -90,7 +90,7 @@ impl<L: Spectrum, S: Spectrum, O: Observer, P: WavelengthPdf, T: Float> Carry fo
 
 /// Rules fitted to the scene's lights, one per light at the same M
 /// wavelengths (`Rule::fit_each`), in `CAP` lanes (CAP ≥ M: the lanes
-/// beyond M weigh nothing; [`with_lanes`](super::with_lanes) picks CAP
+/// beyond M weigh nothing; [`with_lanes`](speclab::sampling::with_lanes) picks CAP
 /// from M); every surface evaluated at the wavelengths once, and each
 /// light's emission folded into its own rule's XYZ weights.
 #[derive(Clone, Debug)]
