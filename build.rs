@@ -147,7 +147,7 @@ fn conductors() -> Result<String, speclab_tables::Error> {
         let _ = writeln!(
             statics,
             "/// {name}: η from [`{id}_ETA`], k from [`{id}_K`] (sources there).\n\
-             pub static {id}: crate::spectrum::Conductor<'static> = crate::spectrum::Conductor::new(&{id}_ETA, &{id}_K);"
+             pub static {id}: crate::spectrum::Conductor<'static> = crate::spectrum::Conductor::built_in(&{id}_ETA, &{id}_K);"
         );
     }
     let names: Vec<&str> = named.iter().map(|(n, _)| n.as_str()).collect();

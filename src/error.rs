@@ -93,6 +93,16 @@ pub enum Error {
     /// white point must be finite with a non-zero y (the white's positive),
     /// and the primaries must span a space.
     Primaries,
+    /// A table of another role than the one asked for (a light given as a
+    /// conductor's η).
+    Role {
+        /// What the table was given as, e.g. `a conductor's η`.
+        what: &'static str,
+        /// The role that part takes.
+        expected: crate::spectrum::Role,
+        /// The table's role.
+        found: crate::spectrum::Role,
+    },
     /// Dispersion coefficients that do not give a real, finite, positive
     /// refractive index over 380–730 nm.
     Dispersion,
@@ -197,6 +207,9 @@ impl fmt::Display for Error {
                 "expected primaries and a white point of finite chromaticities with non-zero y \
                  (the white's positive), the primaries spanning a space, found others"
             ),
+            Error::Role { what, expected, found } => {
+                write!(f, "expected a table of role {expected:?} for {what}, found one of role {found:?}")
+            }
             Error::Dispersion => write!(
                 f,
                 "expected dispersion coefficients giving a real, finite, positive refractive index \

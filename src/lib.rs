@@ -107,6 +107,8 @@ mod doc_pages {
     pub struct Library;
     #[doc = include_str!("../docs/named-data.md")]
     pub struct NamedData;
+    #[doc = include_str!("../docs/published-rules.md")]
+    pub struct PublishedRules;
     #[doc = include_str!("../docs/render.md")]
     pub struct Render;
     #[doc = include_str!("../docs/speed.md")]

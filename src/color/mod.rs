@@ -41,9 +41,10 @@ mod rgb;
 pub mod rgb_spectra;
 pub mod rgb_table;
 pub mod space;
+mod space_spectra;
 pub mod srgb;
 pub(crate) mod triple;
-pub mod upsample;
+mod upsample;
 mod xyz;
 
 pub use display::{EncodedSrgb, Exposure, GamutMap, PixelPipeline, Srgb8};

@@ -75,7 +75,6 @@ use std::sync::{Arc, OnceLock};
 
 use crate::color::matrix::{Matrix, inverse, mul};
 use crate::color::rgb::LinearRgb;
-use crate::color::rgb_spectra::RgbAlbedo;
 use crate::color::rgb_table::{RESOLUTION, RgbTable};
 use crate::color::xyz::Xyz;
 use crate::error::Error;
@@ -293,24 +292,6 @@ impl RgbSpace {
             self.table = Arc::new(OnceLock::from(table));
         }
         self
-    }
-
-    /// The reflectance whose colour under the space's illuminant is `rgb`
-    /// (each component in [0, 1]; otherwise an [`Error::Albedo`]), fitted
-    /// for this colour alone: about 10 µs. The closest a sigmoid
-    /// polynomial comes, for a colour no reflectance has (outside the
-    /// object colours of the illuminant: much of ACES2065-1's cube).
-    pub fn fit_albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
-        let c = crate::color::rgb_table::albedo_components(rgb.into())?;
-        Ok(RgbAlbedo::from_polynomial(self.fit.fit(c)))
-    }
-
-    /// The reflectance whose colour under the space's illuminant is `rgb`
-    /// (each component in [0, 1]; otherwise an [`Error::Albedo`]), looked
-    /// up in the space's [`table`](RgbSpace::table).
-    #[inline]
-    pub fn albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
-        self.table().albedo(rgb.into())
     }
 }
 

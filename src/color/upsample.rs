@@ -43,15 +43,13 @@
 use crate::color::lab::{lab, lab_jacobian};
 use crate::color::matrix::{Matrix, inverse, mul};
 use crate::color::rgb::LinearRgb;
-use crate::color::rgb_table::constant;
 use crate::color::xyz::Xyz;
 use crate::spectrum::observer;
+use crate::spectrum::sigmoid::constant;
 use crate::spectrum::{
     LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, SigmoidPolynomial, Spectrum, TabulatedSpectrum, integrate,
     quadrature,
 };
-
-pub use crate::color::space::RgbSpace;
 
 /// What a space's colours are fitted with: its illuminant, the
 /// illuminant's white, the balanced matrices, and the quadrature nodes of
@@ -67,23 +65,6 @@ pub(crate) struct Fit {
     to_xyz: Matrix,
     /// `(t, weights)`: the normalised wavelength and `w·L·c̄/Y_white`.
     nodes: Vec<(f64, [f64; 3])>,
-}
-
-impl RgbSpace {
-    /// The colour of a reflectance under the space's illuminant, white
-    /// `Y = 1`: `∫ L·R·c̄ / ∫ L·ȳ`, integrated as the exact reference
-    /// integrates.
-    #[must_use]
-    pub fn albedo_xyz(&self, albedo: &dyn Spectrum) -> Xyz {
-        self.fit.albedo_xyz(albedo)
-    }
-
-    /// [`RgbSpace::albedo_xyz`] as linear RGB, each channel balanced so
-    /// that the perfect reflector is `(1, 1, 1)` exactly.
-    #[must_use]
-    pub fn rgb_of(&self, albedo: &dyn Spectrum) -> LinearRgb {
-        self.fit.rgb(self.fit.albedo_xyz(albedo))
-    }
 }
 
 impl std::fmt::Debug for Fit {

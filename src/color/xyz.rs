@@ -20,6 +20,7 @@
 //! assert!((one.normalized().y - 1.0).abs() < 1e-12); // a renderer's: Y = 1
 //! ```
 
+use crate::spectrum::Float;
 use crate::spectrum::observer::Y_BAR_INTEGRAL;
 
 use crate::color::triple::triple_arithmetic;
@@ -36,6 +37,15 @@ pub struct Xyz {
 }
 
 impl Xyz {
+    /// The sums of a weighted sum, `[X, Y, Z]` (and any lanes after,
+    /// ignored) in the precision they were summed in: the one place a
+    /// sample's, a bucket spectrum's or a rule's XYZ is assembled.
+    #[inline(always)]
+    pub(crate) fn of_sums<T: Float, const N: usize>(sums: [T; N]) -> Xyz {
+        const { assert!(N >= 3) };
+        Xyz::new(sums[0].to_f64(), sums[1].to_f64(), sums[2].to_f64())
+    }
+
     /// All zero.
     pub const ZERO: Xyz = Xyz::new(0.0, 0.0, 0.0);
 

@@ -46,7 +46,8 @@ pub struct ExactPaths {
 impl ExactPaths {
     /// The scene of `spectra` (lights and surfaces; a path names them by
     /// their place in this list), exact for paths of up to `max_depth`
-    /// surfaces.
+    /// surfaces (any `max_depth` is taken: past the degree the largest
+    /// Gauss rule integrates exactly, that rule).
     #[must_use]
     pub fn new(spectra: &[&dyn Spectrum], max_depth: usize) -> Self {
         let mut breaks: Vec<f64> = observer::CMFS.iter().flat_map(|c| c.breaks().iter().copied()).collect();
@@ -63,7 +64,10 @@ impl ExactPaths {
         let inside = breaks.into_iter().filter(|&x| x > LAMBDA_MIN && x < LAMBDA_MAX);
         let pieces = quadrature::pieces(inside.chain([LAMBDA_MIN, LAMBDA_MAX]));
         let extra = if smooth { integrate::SMOOTH_EXTRA } else { 0 };
-        let rule = quadrature::for_degree(degree * (max_depth + 1) + 3 + extra);
+        // Saturating: past the largest rule's degree, the largest rule.
+        let rule = quadrature::for_degree(
+            degree.saturating_mul(max_depth.saturating_add(1)).saturating_add(3 + extra),
+        );
         let mut nodes = Vec::with_capacity(rule.len() * pieces.len());
         let mut weights = [Vec::new(), Vec::new(), Vec::new()];
         for w in pieces.windows(2) {

@@ -192,8 +192,8 @@ impl<const M: usize, B: Bucketing<M>, T: Float> RegularSpectrum<M, B, T> {
     #[inline]
     #[must_use]
     pub fn to_xyz(&self) -> Xyz {
-        let [x, y, z] = column_sums(T::choose(Columns::<M, B>::F32, Columns::<M, B>::F64), &self.values);
-        Xyz::new(x.to_f64(), y.to_f64(), z.to_f64())
+        let columns = T::choose(Columns::<M, B>::F32, Columns::<M, B>::F64);
+        Xyz::of_sums(column_sums(columns.each_ref().map(|c| &c[..]), &self.values))
     }
 }
 

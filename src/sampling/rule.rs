@@ -30,7 +30,8 @@
 use crate::color::Xyz;
 use crate::error::Error;
 use crate::sampling::buckets::{BucketRule, center};
-use crate::sampling::wavelengths::{FixedWavelengths, Weighted, dot_slices};
+use crate::sampling::wavelengths::{FixedWavelengths, Weighted};
+use crate::spectrum::simd::column_sums;
 use crate::spectrum::{Float, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
 
 /// The most wavelengths a rule takes (buckets, fitted and given rules alike).
@@ -176,7 +177,7 @@ impl Rule {
     #[must_use]
     pub fn xyz_of_values(&self, values: &[f64]) -> Xyz {
         let [x, y, z] = &self.weights;
-        Xyz::new(dot_slices(x, values), dot_slices(y, values), dot_slices(z, values)) * self.scale
+        Xyz::of_sums(column_sums([x, y, z], values)) * self.scale
     }
 
     /// The XYZ of the point-wise product of `factors`, each the values of

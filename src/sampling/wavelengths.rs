@@ -135,12 +135,6 @@ impl<const K: usize, T: Float> Weighted<K, T> {
     }
 }
 
-/// `[X, Y, Z, _]` in `T` as an [`Xyz`].
-#[inline(always)]
-pub(crate) fn xyz<T: Float>([x, y, z, _]: [T; 4]) -> Xyz {
-    Xyz::new(x.to_f64(), y.to_f64(), z.to_f64())
-}
-
 /// What drawn and fixed wavelengths share: the wavelengths, their
 /// weights, sampling, XYZ, luminance and a light's emission folded into
 /// the weights, for a type `$name<K, T>` holding a [`Weighted`] as `.0`.
@@ -183,7 +177,7 @@ macro_rules! weighted_wavelengths {
             #[inline(always)]
             #[must_use]
             pub fn to_xyz(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> $crate::Xyz {
-                $crate::sampling::wavelengths::xyz(self.sums(&v))
+                $crate::Xyz::of_sums(self.sums(&v))
             }
 
             /// The Y alone, `Σⱼ w_Yⱼ·vⱼ`, in `T` (spectrum·nm, like
@@ -282,7 +276,7 @@ impl<const M: usize, T: Float> FixedWavelengths<M, T> {
     /// `[X, Y, Z, 0]` of values `v`, from the columns.
     #[inline(always)]
     fn sums(&self, v: &SampledSpectrum<M, T>) -> [T; 4] {
-        let [x, y, z] = column_sums(&self.1, &v.values);
+        let [x, y, z] = column_sums(self.1.each_ref().map(|c| &c[..]), &v.values);
         [x, y, z, T::ZERO]
     }
 }
@@ -301,49 +295,6 @@ impl<const K: usize, T: Float> Emission<K, T> {
     #[inline(always)]
     #[must_use]
     pub fn xyz(&self, beta: SampledSpectrum<K, T>) -> Xyz {
-        xyz(weighted_sum(&self.rows, &beta.values))
-    }
-}
-
-/// `Σᵢ wᵢ·vᵢ` for a count known only at run time (the study's rules and
-/// hero widths), in four interleaved partial sums walked in chunks of
-/// four, so that they stay in registers. Missing values (fewer than
-/// weights) count as 0.
-#[inline(always)]
-pub(crate) fn dot_slices(w: &[f64], values: &[f64]) -> f64 {
-    let n = w.len().min(values.len());
-    let ((w4, w_rest), (v4, v_rest)) = (w[..n].as_chunks::<4>(), values[..n].as_chunks::<4>());
-    let mut acc = [0.0; 4];
-    for (w, v) in w4.iter().zip(v4) {
-        for l in 0..4 {
-            acc[l] += w[l] * v[l];
-        }
-    }
-    for (l, (&w, &v)) in w_rest.iter().zip(v_rest).enumerate() {
-        acc[l] += w * v;
-    }
-    (acc[0] + acc[2]) + (acc[1] + acc[3])
-}
-
-#[cfg(test)]
-mod tests {
-    use super::dot_slices;
-
-    /// The partial sums in their order, for every count from 0 to 13 (whole
-    /// chunks, remainders, and values shorter than the weights, which count
-    /// as 0).
-    #[test]
-    fn the_run_time_sum_keeps_its_order() {
-        let w: Vec<f64> = (0..13).map(|i| 1.0 / (f64::from(i) + 1.7)).collect();
-        let v: Vec<f64> = (0..13).map(|i| (f64::from(i) * 0.618_034).fract() - 0.3).collect();
-        for n in 0..=13 {
-            let by_hand = (0..n).fold([0.0; 4], |mut acc, i| {
-                acc[i % 4] += w[i] * v[i];
-                acc
-            });
-            let expected = (by_hand[0] + by_hand[2]) + (by_hand[1] + by_hand[3]);
-            assert_eq!(dot_slices(&w[..n], &v[..n]).to_bits(), expected.to_bits(), "n = {n}");
-            assert_eq!(dot_slices(&w, &v[..n]).to_bits(), expected.to_bits(), "missing values, n = {n}");
-        }
+        Xyz::of_sums(weighted_sum(&self.rows, &beta.values))
     }
 }

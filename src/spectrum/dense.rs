@@ -42,17 +42,9 @@ use std::borrow::Cow;
 
 use crate::spectrum::float::Float;
 use crate::spectrum::interface::{Pieces, Spectrum};
-use crate::spectrum::lookup::{DENSE_ENTRIES, OUTSIDE, nearest_nm};
-use crate::spectrum::observer::{Observer, xyz_bar_const};
-use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
+use crate::spectrum::lookup::{DENSE_ENTRIES, entry, nearest_nm};
+use crate::spectrum::sampled::{SampledSpectrum, Wavelengths, dense_sample};
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
-
-/// The entry of index `i` (a [`nearest_nm`] index) of a dense table:
-/// in bounds for any `i`.
-#[inline(always)]
-fn entry<R: Copy>(table: &[R; DENSE_ENTRIES], i: u16) -> R {
-    table[usize::from(i).min(DENSE_ENTRIES - 1)]
-}
 
 /// A spectrum at every whole nanometre from 380 to 730 nm, in `f32` and
 /// `f64`, looked up at the nearest one.
@@ -89,8 +81,7 @@ impl DenseSpectrum {
     #[inline(always)]
     #[must_use]
     pub fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {
-        let (nearest, table) = (at.nearest_nm(), T::choose_row(&self.values_f32, &self.values));
-        SampledSpectrum::new(std::array::from_fn(|j| entry(table, nearest[j])))
+        dense_sample(&self.values_f32, &self.values, at)
     }
 }
 
@@ -130,10 +121,10 @@ impl Spectrum for DenseSpectrum {
         }
     }
 
-    /// Itself: its lookup reaches it behind any pointer.
+    /// Its tables: its lookup reaches it behind any pointer.
     #[inline(always)]
-    fn as_dense(&self) -> Option<&DenseSpectrum> {
-        Some(self)
+    fn dense_values(&self) -> Option<(&[f32; DENSE_ENTRIES], &[f64; DENSE_ENTRIES])> {
+        Some((&self.values_f32, &self.values))
     }
 
     /// One load per wavelength ([`DenseSpectrum::sample`]).
@@ -158,45 +149,4 @@ impl Spectrum for DenseSpectrum {
         });
         Some(Pieces { breaks: Cow::Borrowed(breaks), degree: 0 })
     }
-}
-
-/// The CIE 1931 observer at every whole nanometre from 380 to 730 nm, in
-/// `f32` and `f64`: one row `[x̄, ȳ, z̄, 1]` per nanometre, computed at
-/// compile time, looked up at the nearest one in the wavelengths'
-/// precision. A zero-sized value.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct DenseObserver;
-
-impl DenseObserver {
-    /// The dense observer (nothing to build: its rows are static).
-    #[must_use]
-    pub const fn new() -> Self {
-        DenseObserver
-    }
-}
-
-impl Observer for DenseObserver {
-    #[inline(always)]
-    fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
-        let (nearest, rows) = (at.nearest_nm(), T::choose(&ROWS_F32, &ROWS_F64));
-        std::array::from_fn(|j| entry(rows, nearest[j]))
-    }
-}
-
-/// The observer's rows at every whole nanometre, then zeros.
-static ROWS_F64: [[f64; 4]; DENSE_ENTRIES] = observer_rows();
-/// The same, rounded to `f32`.
-static ROWS_F32: [[f32; 4]; DENSE_ENTRIES] = crate::spectrum::float::rounded(&ROWS_F64);
-
-/// `[x̄, ȳ, z̄, 1]` per whole nanometre, and `[0, 0, 0, 1]` outside (a
-/// wavelength outside weighs nothing but keeps its pdf).
-const fn observer_rows() -> [[f64; 4]; DENSE_ENTRIES] {
-    let mut out = [[0.0, 0.0, 0.0, 1.0]; DENSE_ENTRIES];
-    let mut i = 0;
-    while i < OUTSIDE as usize {
-        let [x, y, z] = xyz_bar_const(LAMBDA_MIN + i as f64);
-        out[i] = [x, y, z, 1.0];
-        i += 1;
-    }
-    out
 }

@@ -105,6 +105,13 @@ impl UniformLookup {
     }
 }
 
+/// The entry of index `i` (a [`nearest_nm`] index) of a dense table:
+/// in bounds for any `i`.
+#[inline(always)]
+pub(crate) fn entry<R: Copy>(table: &[R; DENSE_ENTRIES], i: u16) -> R {
+    table[usize::from(i).min(DENSE_ENTRIES - 1)]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

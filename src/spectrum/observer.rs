@@ -19,7 +19,7 @@ use crate::spectrum::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
 use crate::spectrum::data::{CIE_X_COEFFS, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_COEFFS};
 use crate::spectrum::float::Float;
 use crate::spectrum::interp;
-use crate::spectrum::lookup::UniformLookup;
+use crate::spectrum::lookup::{DENSE_ENTRIES, OUTSIDE, UniformLookup, entry};
 use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::Wavelengths;
 use crate::spectrum::tabulated::TabulatedSpectrum;
@@ -199,6 +199,47 @@ const LOOKUP: UniformLookup = match UniformLookup::for_table(&CIE_Y_LAMBDA, SEGM
     Some(g) => g,
     None => panic!("the CIE tables are equidistant"),
 };
+
+/// The CIE 1931 observer at every whole nanometre from 380 to 730 nm, in
+/// `f32` and `f64`: one row `[x̄, ȳ, z̄, 1]` per nanometre, computed at
+/// compile time, looked up at the nearest one in the wavelengths'
+/// precision. A zero-sized value.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DenseObserver;
+
+impl DenseObserver {
+    /// The dense observer (nothing to build: its rows are static).
+    #[must_use]
+    pub const fn new() -> Self {
+        DenseObserver
+    }
+}
+
+impl Observer for DenseObserver {
+    #[inline(always)]
+    fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
+        let (nearest, rows) = (at.nearest_nm(), T::choose(&ROWS_F32, &ROWS_F64));
+        std::array::from_fn(|j| entry(rows, nearest[j]))
+    }
+}
+
+/// The observer's rows at every whole nanometre, then zeros.
+static ROWS_F64: [[f64; 4]; DENSE_ENTRIES] = observer_rows();
+/// The same, rounded to `f32`.
+static ROWS_F32: [[f32; 4]; DENSE_ENTRIES] = crate::spectrum::float::rounded(&ROWS_F64);
+
+/// `[x̄, ȳ, z̄, 1]` per whole nanometre, and `[0, 0, 0, 1]` outside (a
+/// wavelength outside weighs nothing but keeps its pdf).
+const fn observer_rows() -> [[f64; 4]; DENSE_ENTRIES] {
+    let mut out = [[0.0, 0.0, 0.0, 1.0]; DENSE_ENTRIES];
+    let mut i = 0;
+    while i < OUTSIDE as usize {
+        let [x, y, z] = xyz_bar_const(LAMBDA_MIN + i as f64);
+        out[i] = [x, y, z, 1.0];
+        i += 1;
+    }
+    out
+}
 
 #[cfg(test)]
 mod tests {

@@ -15,9 +15,10 @@
 //! `data::conductors` and `data::glasses`.
 //!
 //! ```
-//! use speclab::data::{conductors, glasses};
-//! use speclab::spectrum::{Cauchy, Spectrum};
+//! use speclab::data::{conductors, glasses, lights};
+//! use speclab::spectrum::{Cauchy, Conductor, Spectrum};
 //! let gold = conductors::AU.reflectance();
+//! assert!(Conductor::new(&lights::D65, conductors::AU.k()).is_err()); // a light is no index
 //! assert!(gold.eval(650.0) > 0.9 && gold.eval(450.0) < 0.45); // yellow
 //! assert!((glasses::N_BK7.eval(587.5618) - 1.5168).abs() < 5e-6); // catalogue n_d
 //! let plastic = Cauchy::new(1.5, 0.0042, 0.0)?;
@@ -30,6 +31,7 @@ use crate::error::Error;
 use crate::spectrum::interface::{Pieces, Spectrum};
 use crate::spectrum::interp;
 use crate::spectrum::tabulated::TabulatedSpectrum;
+use crate::spectrum::validate::Role;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// A conductor's complex refractive index `η + i·k`, as two tables.
@@ -40,9 +42,24 @@ pub struct Conductor<'a> {
 }
 
 impl<'a> Conductor<'a> {
-    /// The conductor of real part `eta` and extinction coefficient `k`.
-    #[must_use]
-    pub const fn new(eta: &'a TabulatedSpectrum, k: &'a TabulatedSpectrum) -> Self {
+    /// The conductor of real part `eta` (a table of role
+    /// [`Role::Index`]) and extinction coefficient `k` (of role
+    /// [`Role::Extinction`]); an [`Error::Role`] for a table of another
+    /// role (a light's or a reflectance's values are not an index).
+    pub fn new(eta: &'a TabulatedSpectrum, k: &'a TabulatedSpectrum) -> Result<Self, Error> {
+        for (table, expected, what) in
+            [(eta, Role::Index, "a conductor's η"), (k, Role::Extinction, "a conductor's k")]
+        {
+            if table.role() != expected {
+                return Err(Error::Role { what, expected, found: table.role() });
+            }
+        }
+        Ok(Conductor { eta, k })
+    }
+
+    /// The built-in conductors' (their tables' roles are the build
+    /// script's).
+    pub(crate) const fn built_in(eta: &'a TabulatedSpectrum, k: &'a TabulatedSpectrum) -> Self {
         Conductor { eta, k }
     }
 

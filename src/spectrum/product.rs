@@ -9,15 +9,22 @@
 //! let l = 610.0;
 //! assert_eq!(twice.eval(l), patches::G4.eval(l) * patches::G4.eval(l));
 //! assert_eq!(twice.pieces().map(|p| p.degree), Some(6));
-//! let path = Product::power(&patches::G4, 3);
+//! let path = Product::power(&patches::G4, 3)?;
 //! assert_eq!(path.len(), 3);
+//! assert!(Product::power(&patches::G4, usize::MAX).is_err());
 //! assert_eq!(Product::new(vec![]).eval(l), 1.0);
 //! # let _ = lights::A;
+//! # Ok::<(), speclab::Error>(())
 //! ```
 
 use std::borrow::Cow;
 
+use crate::error::Error;
 use crate::spectrum::interface::{Pieces, Spectrum};
+
+/// The most factors [`Product::power`] makes (a path of 64 bounces off one
+/// surface).
+pub const MAX_POWER: usize = 64;
 
 /// `Πᵢ Sᵢ(λ)` over borrowed spectra (1 for none).
 #[derive(Clone, Default)]
@@ -38,10 +45,13 @@ impl<'a> Product<'a> {
         Product { factors }
     }
 
-    /// `s` to the power `depth` (`depth` factors of `s`).
-    #[must_use]
-    pub fn power(s: &'a dyn Spectrum, depth: usize) -> Self {
-        Product { factors: vec![s; depth] }
+    /// `s` to the power `depth` (`depth` factors of `s`): an
+    /// [`Error::Count`] past [`MAX_POWER`] factors.
+    pub fn power(s: &'a dyn Spectrum, depth: usize) -> Result<Self, Error> {
+        if depth > MAX_POWER {
+            return Err(Error::Count { what: "a power of a spectrum", found: depth, min: 0, max: MAX_POWER });
+        }
+        Ok(Product { factors: vec![s; depth] })
     }
 
     /// The number of factors.

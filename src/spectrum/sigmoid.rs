@@ -125,9 +125,36 @@ pub fn sigmoid_f32(x: f32) -> f32 {
     if x < 0.0 { t } else { 1.0 - t }
 }
 
+/// The constant `v` in [0, 1] as a sigmoid polynomial, 0 and 1 exactly:
+/// `c₂ = u/√(1 − u²)`, `u = 2v − 1` (the sigmoid's inverse), the square
+/// root by Newton's steps so that compile time and run time agree.
+#[inline]
+pub(crate) const fn constant(v: f64) -> SigmoidPolynomial {
+    if v == 0.0 {
+        return SigmoidPolynomial::BLACK;
+    } else if v == 1.0 {
+        return SigmoidPolynomial::WHITE;
+    }
+    let u = 2.0 * v - 1.0;
+    let root = const_sqrt(1.0 - u * u);
+    SigmoidPolynomial::new([0.0, 0.0, u / root])
+}
+
+/// `√x` for finite `x > 0` in a `const fn`: eight Newton's steps from
+/// half the exponent (to the last bit or one off).
+const fn const_sqrt(x: f64) -> f64 {
+    let mut y = f64::from_bits((x.to_bits() >> 1) + (1023u64 << 51));
+    let mut i = 0;
+    while i < 8 {
+        y = 0.5 * (y + x / y);
+        i += 1;
+    }
+    y
+}
+
 #[cfg(test)]
 mod tests {
-    use super::{SigmoidPolynomial, sigmoid, sigmoid_f32};
+    use super::{SigmoidPolynomial, const_sqrt, constant, sigmoid, sigmoid_f32};
 
     /// The f32 form against the f64 one, relatively, over the range of
     /// arguments and at the limits; lanes against single values.
@@ -171,5 +198,21 @@ mod tests {
         assert!((sigmoid(3.0) - (1.0 - 0.025_658_350_974_743_1)).abs() < 1e-16);
         assert_eq!((sigmoid(1e200), sigmoid(-1e200)), (1.0, 0.0));
         assert_eq!((sigmoid(f64::INFINITY), sigmoid(f64::NEG_INFINITY)), (1.0, 0.0));
+    }
+
+    /// Newton's root within an ulp of the machine's, and greys' constants
+    /// the sigmoid's inverse.
+    #[test]
+    fn roots_and_greys() {
+        for i in 1..10_000 {
+            let x = f64::from(i) * 1e-4;
+            let (newton, exact) = (const_sqrt(x), x.sqrt());
+            assert!((newton - exact).abs() <= f64::EPSILON * exact, "{x}: {newton} against {exact}");
+        }
+        assert_eq!(constant(0.0), SigmoidPolynomial::BLACK);
+        assert_eq!(constant(1.0), SigmoidPolynomial::WHITE);
+        for v in [1e-9, 0.18, 0.5, 0.75, 1.0 - 1e-9] {
+            assert!((constant(v).eval(500.0) - v).abs() < 1e-9 * v.max(1e-3), "{v}");
+        }
     }
 }

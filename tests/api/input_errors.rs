@@ -230,3 +230,32 @@ fn a_stated_format_is_the_one_parsed() {
     assert!(Load::new(Role::Light).with_format(Format::Json).text(text, "in.txt").is_err());
     assert!(Load::new(Role::Light).with_format(Format::Brace).text(text, "in.txt").is_err());
 }
+
+/// Tables of the wrong role as a conductor's η or k, a power past the
+/// limit, and an exact scene of any depth: errors or values, never panics.
+#[test]
+fn caller_counts_and_roles() {
+    use speclab::data::{conductors, lights, patches};
+    use speclab::sampling::reference::ExactPaths;
+    use speclab::spectrum::{Conductor, MAX_POWER, Product, Spectrum};
+    let gold = &conductors::AU;
+    let err = Conductor::new(&lights::D65, gold.k()).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "expected a table of role Index for a conductor's η, found one of role Light"
+    );
+    assert!(matches!(
+        Conductor::new(gold.eta(), gold.eta()),
+        Err(Error::Role { expected: Role::Extinction, .. })
+    ));
+    let own = Conductor::new(gold.eta(), gold.k()).expect("gold's own tables");
+    assert_eq!(own.reflectance().eval(600.0), gold.reflectance().eval(600.0));
+    assert_eq!(Product::power(&patches::G4, MAX_POWER).map(|p| p.len()).ok(), Some(MAX_POWER));
+    let err = Product::power(&patches::G4, MAX_POWER + 1).unwrap_err();
+    assert!(matches!(err, Error::Count { found: 65, max: 64, .. }), "{err}");
+    let spectra: [&dyn Spectrum; 2] = [&lights::A, &patches::G4];
+    for depth in [0, 1, usize::MAX] {
+        let scene = ExactPaths::new(&spectra, depth);
+        assert!(scene.xyz(0, &[1], &[0.0, 1.0]).is_ok_and(|x| x.y > 0.0), "depth {depth}");
+    }
+}

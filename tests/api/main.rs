@@ -5,6 +5,8 @@
 
 mod alloc;
 mod build_data;
+mod clients;
+mod doc_pages;
 mod fuzz_body;
 mod fuzz_regressions;
 mod input_errors;

@@ -3,12 +3,12 @@
 //! coefficients, the three cases on three threads.
 
 use crate::color::rgb_table::lookup::node;
-use crate::color::space::RgbSpace;
+use crate::color::upsample::Fit;
 
 /// The coefficients of all three cases, `[case][z][y][x]`, in `f32`.
-pub(super) fn coefficients(space: &RgbSpace, n: usize) -> Vec<[f32; 3]> {
+pub(super) fn coefficients(fit: &Fit, n: usize) -> Vec<[f32; 3]> {
     let cases: Vec<Vec<[f32; 3]>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..3).map(|case| scope.spawn(move || case_table(space, n, case))).collect();
+        let handles: Vec<_> = (0..3).map(|case| scope.spawn(move || case_table(fit, n, case))).collect();
         handles.into_iter().map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).collect()
     });
     cases.concat()
@@ -17,7 +17,7 @@ pub(super) fn coefficients(space: &RgbSpace, n: usize) -> Vec<[f32; 3]> {
 /// The coefficients of one case, `[z][y][x]`: every slice of `z`, from the
 /// middle outwards, each fit starting from its neighbour in the slice
 /// before (or, in the first, from the full fit).
-fn case_table(space: &RgbSpace, n: usize, case: usize) -> Vec<[f32; 3]> {
+fn case_table(fit: &Fit, n: usize, case: usize) -> Vec<[f32; 3]> {
     let mut out = vec![[0.0; 3]; n * n * n];
     let mut start = vec![None; n * n * n];
     let rgb = |k: usize, j: usize, i: usize| {
@@ -36,7 +36,7 @@ fn case_table(space: &RgbSpace, n: usize, case: usize) -> Vec<[f32; 3]> {
         for j in 0..n {
             for i in 0..n {
                 let guess = from.and_then(|f| start[(f * n + j) * n + i]);
-                let c = space.fit.fit_from(rgb(k, j, i), guess).coefficients();
+                let c = fit.fit_from(rgb(k, j, i), guess).coefficients();
                 start[(k * n + j) * n + i] = Some(c);
                 out[(k * n + j) * n + i] = c.map(|v| v as f32);
             }

@@ -17,8 +17,6 @@ use speclab_tables::rgb_file::HEADER_LEN;
 
 use wide::f32x4;
 
-use crate::spectrum::SigmoidPolynomial;
-
 /// The node `k` of `n` of the largest component, in `f32` (computed in
 /// `f64`, then rounded: the fits are made at exactly these values).
 #[must_use]
@@ -238,33 +236,6 @@ const fn triple(bytes: &[u8], i: usize) -> [f32; 3] {
     ]
 }
 
-/// The constant `v` in [0, 1] as a sigmoid polynomial, 0 and 1 exactly:
-/// `c₂ = u/√(1 − u²)`, `u = 2v − 1` (the sigmoid's inverse), the square
-/// root by Newton's steps so that compile time and run time agree.
-#[inline]
-pub(crate) const fn constant(v: f64) -> SigmoidPolynomial {
-    if v == 0.0 {
-        return SigmoidPolynomial::BLACK;
-    } else if v == 1.0 {
-        return SigmoidPolynomial::WHITE;
-    }
-    let u = 2.0 * v - 1.0;
-    let root = const_sqrt(1.0 - u * u);
-    SigmoidPolynomial::new([0.0, 0.0, u / root])
-}
-
-/// `√x` for finite `x > 0` in a `const fn`: eight Newton's steps from
-/// half the exponent (to the last bit or one off).
-const fn const_sqrt(x: f64) -> f64 {
-    let mut y = f64::from_bits((x.to_bits() >> 1) + (1023u64 << 51));
-    let mut i = 0;
-    while i < 8 {
-        y = 0.5 * (y + x / y);
-        i += 1;
-    }
-    y
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -287,22 +258,6 @@ mod tests {
                 assert_eq!(k, interval_walked(z, &all, n), "z = {z:e}, n = {n}");
                 assert!(node(k, n) <= z && (z < node(k + 1, n) || k == n - 2), "z = {z:e}: {k}");
             }
-        }
-    }
-
-    /// Newton's root within an ulp of the machine's, and greys' constants
-    /// the sigmoid's inverse.
-    #[test]
-    fn roots_and_greys() {
-        for i in 1..10_000 {
-            let x = f64::from(i) * 1e-4;
-            let (newton, exact) = (const_sqrt(x), x.sqrt());
-            assert!((newton - exact).abs() <= f64::EPSILON * exact, "{x}: {newton} against {exact}");
-        }
-        assert_eq!(constant(0.0), SigmoidPolynomial::BLACK);
-        assert_eq!(constant(1.0), SigmoidPolynomial::WHITE);
-        for v in [1e-9, 0.18, 0.5, 0.75, 1.0 - 1e-9] {
-            assert!((constant(v).eval(500.0) - v).abs() < 1e-9 * v.max(1e-3), "{v}");
         }
     }
 

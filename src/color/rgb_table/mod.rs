@@ -47,11 +47,11 @@ use speclab_tables::rgb_file;
 use crate::color::RgbAlbedo;
 use crate::color::rgb::LinearRgb;
 use crate::color::rgb_spectra::Split;
-use crate::color::space::RgbSpace;
+use crate::color::upsample::Fit;
 use crate::error::{Error, ReadError};
 use crate::spectrum::SigmoidPolynomial;
 
-pub(crate) use lookup::constant;
+use crate::spectrum::sigmoid::constant;
 pub use lookup::node;
 
 /// Nodes per axis of the built-in tables.
@@ -114,16 +114,13 @@ impl RgbTable {
         RgbTable { bytes, n, nodes, guesses: lookup::guesses(&nodes, n) }
     }
 
-    /// The table of `space` with `resolution` nodes per axis (2 to 256),
-    /// fitted now: the full [`RESOLUTION`] takes seconds (sRGB) to a
-    /// minute (ACES2065-1) in a release build, on up to three threads.
-    #[must_use]
-    pub fn fit(space: &RgbSpace, resolution: usize) -> RgbTable {
-        let n = resolution.clamp(2, rgb_file::MAX_RESOLUTION as usize);
-        let header =
-            rgb_file::Header { resolution: n as u32, matrix: space.fit.to_rgb, name: space.name().into() };
+    /// A table fitted by `fit` for the space named `name`, `n` nodes per
+    /// axis (clamped into 2 to 256): what [`RgbTable::fit`] makes.
+    pub(crate) fn fitted(fit: &Fit, name: &str, n: usize) -> RgbTable {
+        let n = n.clamp(2, rgb_file::MAX_RESOLUTION as usize);
+        let header = rgb_file::Header { resolution: n as u32, matrix: fit.to_rgb, name: name.into() };
         let mut bytes = rgb_file::encode_header(&header);
-        for triple in fit::coefficients(space, n) {
+        for triple in fit::coefficients(fit, n) {
             bytes.extend(triple.iter().flat_map(|v| v.to_le_bytes()));
         }
         rgb_file::finish(&mut bytes);

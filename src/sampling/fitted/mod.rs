@@ -47,7 +47,8 @@ pub use moments::{MAX_REFLECTANCE, MAX_SURFACES};
 use std::sync::{Arc, OnceLock};
 
 use crate::error::Error;
-use crate::sampling::fitted::problem::{CANDIDATES, Problem};
+use crate::sampling::fitted::moments::CANDIDATES;
+use crate::sampling::fitted::problem::Problem;
 use crate::sampling::rule::{MAX_M, Rule, check_m};
 use crate::spectrum::{LAMBDA_MIN, Spectrum};
 

@@ -14,9 +14,16 @@
 use std::sync::OnceLock;
 
 use crate::error::Error;
-use crate::sampling::fitted::problem::{CANDIDATES, candidate};
 use crate::sampling::prior::{PriorPath, draw_paths, prior};
 use crate::spectrum::{LAMBDA_MIN, Spectrum, integrate, observer, quadrature};
+
+/// Candidate wavelengths: every nm from 380 to 730.
+pub(crate) const CANDIDATES: usize = 351;
+
+/// Candidate `j`, nm.
+pub(crate) fn candidate(j: usize) -> f64 {
+    LAMBDA_MIN + j as f64
+}
 
 /// The most surfaces a fit takes (in a release build the moments take
 /// about 40 ms for a few surfaces and 0.1 ms and 12 kB more for each).

@@ -25,16 +25,8 @@
 //! power gives the same rule.
 
 use crate::error::Error;
-use crate::sampling::fitted::moments::Moments;
-use crate::spectrum::{LAMBDA_MIN, Spectrum, integrate};
-
-/// Candidate wavelengths: every nm from 380 to 730.
-pub(crate) const CANDIDATES: usize = 351;
-
-/// Candidate `j`, nm.
-pub(crate) fn candidate(j: usize) -> f64 {
-    LAMBDA_MIN + j as f64
-}
+use crate::sampling::fitted::moments::{CANDIDATES, Moments, candidate};
+use crate::spectrum::{Spectrum, integrate};
 
 /// The anchors' weight, relative to the prior's mean row weight (squared).
 pub(crate) const ANCHOR: f64 = 1e4;

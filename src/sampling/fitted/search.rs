@@ -13,7 +13,8 @@
 //!   where it was, by the same formula; sweeps repeat while any move lowers
 //!   the residual.
 
-use crate::sampling::fitted::problem::{CANDIDATES, Problem};
+use crate::sampling::fitted::moments::CANDIDATES;
+use crate::sampling::fitted::problem::Problem;
 
 /// How far refinement moves a node, nm (candidates).
 const WINDOW: usize = 10;

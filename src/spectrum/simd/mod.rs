@@ -91,14 +91,18 @@ pub(crate) fn weighted_sum<T: Float, const K: usize>(rows: &[[T; 4]; K], v: &[T;
 }
 
 /// `[Σⱼ c₀ⱼ·vⱼ, Σⱼ c₁ⱼ·vⱼ, Σⱼ c₂ⱼ·vⱼ]`: three columns of weights against
-/// `M` values (the fixed kinds' X, Y and Z), four values per vector, a
+/// the values `v` (the fixed kinds' X, Y and Z), four values per vector, a
 /// count that is not a multiple of four padded with zeros; per column,
-/// four partial sums added as `(a₀ + a₂) + (a₁ + a₃)`.
+/// four partial sums added as `(a₀ + a₂) + (a₁ + a₃)`. Over the shortest
+/// of the four slices (missing values count as 0): compile-time counts
+/// (`RegularSpectrum`, `FixedWavelengths`, unrolled when inlined), a
+/// rule's run-time count, and the exact reference's batch all sum here.
 #[inline(always)]
-pub(crate) fn column_sums<T: Float, const M: usize>(columns: &[[T; M]; 3], v: &[T; M]) -> [T; 3] {
+pub(crate) fn column_sums<T: Float>(columns: [&[T]; 3], v: &[T]) -> [T; 3] {
+    let n = columns.iter().fold(v.len(), |n, c| n.min(c.len()));
     let mut acc = [T::splat(T::from_f64(-0.0)); 3];
-    let (v4, v_rest) = v.as_chunks::<4>();
-    let w = columns.each_ref().map(|c| c.as_chunks::<4>());
+    let (v4, v_rest) = v[..n].as_chunks::<4>();
+    let w = columns.map(|c| c[..n].as_chunks::<4>());
     for (k, vk) in v4.iter().enumerate() {
         let vk = T::v4(*vk);
         for c in 0..3 {
@@ -154,8 +158,11 @@ mod tests {
             }
             let columns = super::columns(&rows);
             let (sums, sums32) = (
-                column_sums(&columns, &b),
-                column_sums(&super::columns(&rows.map(|r| r.map(|w| w as f32))), &b.map(|v| v as f32)),
+                column_sums(columns.each_ref().map(|c| &c[..]), &b),
+                column_sums(
+                    super::columns(&rows.map(|r| r.map(|w| w as f32))).each_ref().map(|c| &c[..]),
+                    &b.map(|v| v as f32),
+                ),
             );
             for c in 0..3 {
                 let scalar: f64 = (0..N).map(|j| rows[j][c] * b[j]).sum();
@@ -200,6 +207,31 @@ mod tests {
             let v = [0, 1, 2].map(|c| wide::f32x4::new([0, 1, 2, 3].map(|i| lane(c, i))));
             let want = v.map(scalar);
             assert_eq!(f32::sums3(v).map(f32::to_bits), want.map(f32::to_bits), "k = {k}");
+        }
+    }
+
+    /// A run-time count sums in the compile-time order: four partial sums
+    /// over chunks of four, `(a₀ + a₂) + (a₁ + a₃)`, for every count from 0
+    /// to 13 (whole chunks, remainders), and values shorter than the
+    /// weights count as 0 (to the bit where multiply and add are not
+    /// fused).
+    #[test]
+    fn a_run_time_count_keeps_the_order() {
+        let w: Vec<f64> = (0..13).map(|i| 1.0 / (f64::from(i) + 1.7)).collect();
+        let v: Vec<f64> = (0..13).map(|i| (f64::from(i) * 0.618_034).fract() - 0.3).collect();
+        for n in 0..=13 {
+            let by_hand = (0..n).fold([0.0; 4], |mut acc, i| {
+                acc[i % 4] += w[i] * v[i];
+                acc
+            });
+            let expected = (by_hand[0] + by_hand[2]) + (by_hand[1] + by_hand[3]);
+            let tolerance = if cfg!(target_feature = "fma") { 1e-15 } else { 0.0 };
+            for got in [column_sums([&w[..n]; 3], &v[..n]), column_sums([&w[..]; 3], &v[..n])] {
+                assert!(
+                    got.iter().all(|g| (g - expected).abs() <= tolerance),
+                    "n = {n}: {got:?} against {expected}"
+                );
+            }
         }
     }
 }

@@ -25,6 +25,8 @@
 
 use wide::f64x4;
 
+use super::column_sums;
+
 /// Which instructions a batch's sums use.
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum Sums {
@@ -99,14 +101,14 @@ pub(crate) struct Spread {
     pub(crate) second: f64,
 }
 
-/// In two passes over the samples, four per vector (`wide`'s `f64x4`):
+/// In passes over the samples, four per vector (`wide`'s `f64x4`):
 ///
-/// - `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns (the samples past
-///   the last whole vector one at a time; columns shorter than `y` leave
-///   its last samples out of the sums and the spread alike, so the caller
-///   passes both of the grid's length);
-/// - the smallest and largest sample (over the sum's vectors, in the
-///   same pass, and the last four samples) and, in a second pass, the
+/// - `Σᵢ wᵢ·yᵢ` per channel, from the weights' columns: the one weighted
+///   sum, [`column_sums`] (columns shorter than `y` leave its last samples
+///   out of the sums and the spread alike, so the caller passes both of
+///   the grid's length);
+/// - the smallest and largest sample (over whole vectors and the last
+///   four samples) and, in a further pass, the
 ///   largest |y₀ − 2y₁ + y₂| (over windows of six, [`for_each_window`]).
 ///   With every middle segment's margin C, `lo − C·second ≥ 0` and
 ///   `hi + C·second ≤ 1` clear them all: a segment's inner Bernstein
@@ -116,16 +118,11 @@ pub(crate) struct Spread {
 pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Spread) {
     let n = y.len().min(columns[0].len()).min(columns[1].len()).min(columns[2].len());
     let y = &y[..n];
-    let (y4, y_rest) = y.as_chunks::<4>();
-    let w = columns.each_ref().map(|c| c[..n].as_chunks::<4>());
-    let mut acc = [f64x4::ZERO; 3];
+    let sum = column_sums(columns.each_ref().map(|c| &c[..n]), y);
     let first = f64x4::splat(y.first().copied().unwrap_or(0.0));
     let (mut lo, mut hi, mut second) = (first, first, f64x4::ZERO);
-    for (k, yk) in y4.iter().enumerate() {
+    for yk in y.as_chunks::<4>().0 {
         let a = f64x4::new(*yk);
-        for c in 0..3 {
-            acc[c] = f64x4::new(w[c].0[k]).mul_add(a, acc[c]);
-        }
         (lo, hi) = (lo.fast_min(a), hi.fast_max(a));
     }
     if let Some(last) = y.last_chunk::<4>() {
@@ -136,12 +133,6 @@ pub(crate) fn dot_spread(columns: &[Vec<f64>; 3], y: &[f64]) -> ([f64; 3], Sprea
         let [a, b, c] = shifted(six).map(f64x4::new);
         second = second.fast_max((a - b - b + c).abs());
     });
-    let mut sum = acc.map(f64x4::reduce_add);
-    for (i, &y) in y_rest.iter().enumerate() {
-        for c in 0..3 {
-            sum[c] += w[c].1[i] * y;
-        }
-    }
     (sum, finish_spread(y, [lo, hi, second].map(f64x4::to_array)))
 }
 

@@ -73,10 +73,11 @@ pub trait Carry {
 
     /// The XYZ that throughput `beta` carries from light `light` (an
     /// estimate: each light converted with its own weights where the way
-    /// has them).
+    /// has them); zero for an index past the scene's lights.
     fn emitted(&self, path: &Self::Path, light: usize, beta: Self::Value) -> Xyz;
 
-    /// Surface `surface`'s albedo on this path.
+    /// Surface `surface`'s albedo on this path; black for an index past
+    /// the scene's surfaces.
     fn albedo(&self, path: &Self::Path, surface: usize) -> Self::Value;
 
     /// The throughput's luminance relative to a white path's (1 for

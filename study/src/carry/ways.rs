@@ -68,12 +68,12 @@ impl<L: Spectrum, S: Spectrum, O: Observer, P: WavelengthPdf, T: Float> Carry fo
 
     #[inline]
     fn emitted(&self, h: &Self::Path, light: usize, beta: Self::Value) -> Xyz {
-        h.to_xyz(beta * h.sample(&self.lights[light]))
+        self.lights.get(light).map_or(Xyz::ZERO, |l| h.to_xyz(beta * h.sample(l)))
     }
 
     #[inline]
     fn albedo(&self, h: &Self::Path, surface: usize) -> Self::Value {
-        h.sample(&self.surfaces[surface])
+        self.surfaces.get(surface).map_or(SampledSpectrum::zero(), |s| h.sample(s))
     }
 
     /// `y(β)` over ∫ȳ ([`Y_BAR_INTEGRAL`]): for a white β, an estimate of 1.
@@ -106,8 +106,17 @@ pub struct Fitted<const CAP: usize, T: Float = f64> {
 impl<const CAP: usize, T: Float> Fitted<CAP, T> {
     /// The scene's spectra at the rules' wavelengths (`rules[i]` for light
     /// `i`). An [`Error::NoMass`] for no rules; an [`Error::Count`] for
-    /// a rule larger than `CAP`.
+    /// a number of rules other than the number of lights, or a rule
+    /// larger than `CAP`.
     pub fn new(rules: &[Rule], lights: &[impl Spectrum], surfaces: &[impl Spectrum]) -> Result<Self, Error> {
+        if rules.len() != lights.len() && !rules.is_empty() {
+            return Err(Error::Count {
+                what: "rules, one per light",
+                found: rules.len(),
+                min: lights.len(),
+                max: lights.len(),
+            });
+        }
         let each: Vec<FixedWavelengths<CAP, T>> =
             rules.iter().map(Rule::wavelengths).collect::<Result<_, _>>()?;
         let at = each.first().ok_or(Error::NoMass)?;
@@ -137,12 +146,12 @@ impl<const CAP: usize, T: Float> Carry for Fitted<CAP, T> {
 
     #[inline]
     fn emitted(&self, _path: &(), light: usize, beta: Self::Value) -> Xyz {
-        self.lights[light].xyz(beta)
+        self.lights.get(light).map_or(Xyz::ZERO, |l| l.xyz(beta))
     }
 
     #[inline]
     fn albedo(&self, _path: &(), surface: usize) -> Self::Value {
-        self.surfaces[surface]
+        self.surfaces.get(surface).copied().unwrap_or_else(SampledSpectrum::zero)
     }
 
     /// `β·w_Y` with the first rule's weights, over ∫ȳ ([`Y_BAR_INTEGRAL`]).
@@ -209,12 +218,12 @@ impl Carry for Rgb {
 
     #[inline]
     fn emitted(&self, _path: &(), light: usize, beta: LinearRgb) -> Xyz {
-        self.space.xyz(beta * self.lights[light])
+        self.lights.get(light).map_or(Xyz::ZERO, |&l| self.space.xyz(beta * l))
     }
 
     #[inline]
     fn albedo(&self, _path: &(), surface: usize) -> LinearRgb {
-        self.surfaces[surface]
+        self.surfaces.get(surface).copied().unwrap_or_default()
     }
 
     /// The throughput's Y (a white β has Y = 1).

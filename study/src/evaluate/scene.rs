@@ -270,7 +270,7 @@ impl Depth {
     /// The surface `depth` times, as one spectrum.
     #[must_use]
     pub fn path<'a>(self, surface: &'a TabulatedSpectrum) -> Product<'a> {
-        Product::power(surface, self.0)
+        Product::new(vec![surface as &dyn Spectrum; self.0])
     }
 
     /// The exact XYZ of light × surface^depth (at depth 1, exactly

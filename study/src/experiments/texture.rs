@@ -27,7 +27,7 @@ use crate::sampling::estimate::USUAL_K;
 use crate::sampling::strata::Strata;
 use speclab::color::LinearRgb;
 use speclab::color::RgbAlbedo;
-use speclab::color::upsample::RgbSpace;
+use speclab::color::RgbSpace;
 use speclab::sampling::buckets::BucketRule;
 use speclab::sampling::reference;
 

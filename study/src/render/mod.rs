@@ -42,7 +42,7 @@ use crate::sampling::seed::mix;
 use crate::sampling::strata::Strata;
 use rayon::prelude::*;
 use speclab::color::RgbAlbedo;
-use speclab::color::upsample::RgbSpace;
+use speclab::color::RgbSpace;
 use speclab::data::Patch;
 use speclab::named_choices;
 use speclab::sampling::reference;

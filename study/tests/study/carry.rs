@@ -3,7 +3,7 @@
 //! one-bounce path against the exact colour.
 
 use speclab::color::LinearRgb;
-use speclab::color::upsample::RgbSpace;
+use speclab::color::RgbSpace;
 use speclab::data::{lights, patches};
 use speclab::sampling::pdf::{LightPdf, Uniform};
 use speclab::sampling::{HeroSample, reference, rule::Rule};
@@ -102,4 +102,24 @@ fn rgb_is_triples() {
     assert_eq!(rgb.luminance(&(), beta), space.xyz(beta).y);
     assert_eq!(rgb.max_component(&(), beta), beta.max_component());
     assert!(beta.max_component() > 0.0 && beta.max_component() < 0.5);
+}
+
+/// Indices past the scene give nothing (no panic), and a fitted way needs
+/// one rule per light.
+#[test]
+fn indices_past_the_scene_give_nothing() {
+    let (light, surface) = (&lights::F11, &patches::G4);
+    let hero = Hero::new(vec![light], vec![surface], DenseObserver::new(), Uniform);
+    let path = hero.path(0.3);
+    assert_eq!(hero.emitted(&path, 1, hero.one()), Xyz::ZERO);
+    assert_eq!(hero.albedo(&path, 7), SampledSpectrum::zero());
+    let rule = Rule::fit_each(&[light], 10).expect("fits");
+    let fitted = Fitted::<12>::new(&rule, &[light], &[surface]).expect("one rule per light");
+    assert_eq!(fitted.emitted(&(), 2, fitted.one()), Xyz::ZERO);
+    assert_eq!(fitted.albedo(&(), 1), SampledSpectrum::zero());
+    assert!(fitted.emitted(&(), 0, fitted.one()).y > 0.0);
+    assert!(Fitted::<12>::new(&rule, &[light, &lights::A], &[surface]).is_err());
+    let rgb = Rgb::new(&[light], &[surface]);
+    assert_eq!(rgb.emitted(&(), 3, rgb.one()), Xyz::ZERO);
+    assert_eq!(rgb.albedo(&(), 3), LinearRgb::default());
 }

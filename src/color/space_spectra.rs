@@ -1,0 +1,155 @@
+//! The spectra of a space's colours: a colour looked up in the space's
+//! table ([`RgbSpace::albedo`], [`RgbSpace::unbounded`],
+//! [`RgbSpace::light`]) or fitted alone ([`RgbSpace::fit_albedo`]), a
+//! table fitted for a space ([`RgbTable::fit`]), the colour of a
+//! reflectance under the space's illuminant ([`RgbSpace::albedo_xyz`],
+//! [`RgbSpace::rgb_of`]), and sRGB's shorthands (`RgbAlbedo::new`,
+//! `RgbUnbounded::new`, `RgbIlluminant::new`). Here, above the space, its
+//! table, the fit and the spectra's types, so that none of those four
+//! imports another in a circle.
+//!
+//! ```
+//! use speclab::LinearRgb;
+//! use speclab::color::{RgbAlbedo, RgbSpace};
+//! let space = RgbSpace::srgb();
+//! let orange = LinearRgb::new(0.8, 0.35, 0.05);
+//! let looked_up = space.albedo(orange)?; // the embedded table
+//! let fitted = RgbAlbedo::new(orange)?; // fitted for this colour alone
+//! assert!(space.rgb_of(&looked_up).distance(orange) < 2e-3);
+//! assert!(space.rgb_of(&fitted).distance(orange) < 1e-4);
+//! let lamp = space.light(LinearRgb::new(1.0, 0.9, 0.7)); // a warm light, D65 tinted
+//! let shown = space.rgb(speclab::sampling::reference::white(&lamp));
+//! assert!(shown.r > shown.g && shown.g > shown.b);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use crate::color::rgb::LinearRgb;
+use crate::color::rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded, Split};
+use crate::color::rgb_table::{RgbTable, albedo_components};
+use crate::color::space::RgbSpace;
+use crate::color::xyz::Xyz;
+use crate::error::Error;
+use crate::spectrum::Spectrum;
+use crate::spectrum::observer::Y_BAR_INTEGRAL;
+
+/// The spectra of a space's colours, looked up in its table.
+///
+/// **Conventions.** pbrt-v4 scales an unbounded colour by twice its
+/// largest component ([`RgbSpace::unbounded`]): the albedo looked up is
+/// the colour at half brightness, where every chromaticity a reflectance
+/// has is reached. A renderer that takes a colour in [0, 1]³ as its own
+/// albedo and scales only brighter ones uses
+/// [`RgbSpace::unbounded_up_to_one`]: the same spectrum as
+/// [`RgbSpace::albedo`] inside the cube. A light given as an RGB colour in
+/// the space is [`RgbSpace::light`] (pbrt-v4's `RGBIlluminantSpectrum`:
+/// the tint times the space's illuminant, so that `(1, 1, 1)` is the
+/// space's white); a renderer that multiplies by a light spectrum of its
+/// own takes the tint alone, [`RgbSpace::unbounded`], or it counts the
+/// illuminant twice.
+impl RgbSpace {
+    /// The reflectance whose colour under the space's illuminant is `rgb`
+    /// (each component in [0, 1]; otherwise an [`Error::Albedo`]), fitted
+    /// for this colour alone: about 10 µs. The closest a sigmoid
+    /// polynomial comes, for a colour no reflectance has (outside the
+    /// object colours of the illuminant: much of ACES2065-1's cube).
+    pub fn fit_albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
+        let c = albedo_components(rgb.into())?;
+        Ok(RgbAlbedo::from_polynomial(self.fit.fit(c)))
+    }
+
+    /// The reflectance whose colour under the space's illuminant is `rgb`
+    /// (each component in [0, 1]; otherwise an [`Error::Albedo`]), looked
+    /// up in the space's [`table`](RgbSpace::table).
+    #[inline]
+    pub fn albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
+        self.table().albedo(rgb.into())
+    }
+
+    /// The colour of a reflectance under the space's illuminant, white
+    /// `Y = 1`: `∫ L·R·c̄ / ∫ L·ȳ`, integrated as the exact reference
+    /// integrates.
+    #[must_use]
+    pub fn albedo_xyz(&self, albedo: &dyn Spectrum) -> Xyz {
+        self.fit.albedo_xyz(albedo)
+    }
+
+    /// [`RgbSpace::albedo_xyz`] as linear RGB, each channel balanced so
+    /// that the perfect reflector is `(1, 1, 1)` exactly.
+    #[must_use]
+    pub fn rgb_of(&self, albedo: &dyn Spectrum) -> LinearRgb {
+        self.fit.rgb(self.fit.albedo_xyz(albedo))
+    }
+
+    /// Any colour as a non-negative spectrum, `scale · s(λ)`: twice the
+    /// largest component times the albedo of the colour over that, looked
+    /// up in the table (pbrt-v4's `RGBUnboundedSpectrum`). Negative and
+    /// NaN components are taken as 0.
+    #[must_use]
+    pub fn unbounded(&self, rgb: impl Into<LinearRgb>) -> RgbUnbounded {
+        let (scale, poly) = self.table().split(rgb.into(), Split::Twice);
+        RgbUnbounded::from_parts(scale, poly)
+    }
+
+    /// Any colour as a non-negative spectrum, scaled "1 up to 1": a colour
+    /// whose largest component is at most 1 is its albedo
+    /// ([`RgbSpace::albedo`], scale 1), a brighter one its largest
+    /// component times the albedo of the colour over that. Negative and
+    /// NaN components are taken as 0.
+    #[must_use]
+    pub fn unbounded_up_to_one(&self, rgb: impl Into<LinearRgb>) -> RgbUnbounded {
+        let (scale, poly) = self.table().split(rgb.into(), Split::UpToOne);
+        RgbUnbounded::from_parts(scale, poly)
+    }
+
+    /// A light of colour `rgb`: [`RgbSpace::unbounded`]'s spectrum times
+    /// the space's illuminant, normalised so that `(1, 1, 1)` has the
+    /// luminance of a constant spectrum of 1 (pbrt-v4's
+    /// `RGBIlluminantSpectrum`). A renderer that multiplies by its own
+    /// light spectrum wants [`RgbSpace::unbounded`] instead.
+    #[must_use]
+    pub fn light(&self, rgb: impl Into<LinearRgb>) -> RgbIlluminant {
+        let (scale, poly) = self.table().split(rgb.into(), Split::Twice);
+        RgbIlluminant::from_parts(scale * Y_BAR_INTEGRAL / self.fit.white_y, poly, self.fit.illuminant)
+    }
+}
+
+impl RgbTable {
+    /// The table of `space` with `resolution` nodes per axis (2 to 256),
+    /// fitted now: the full [`RESOLUTION`](super::rgb_table::RESOLUTION) takes seconds (sRGB) to a
+    /// minute (ACES2065-1) in a release build, on up to three threads.
+    #[must_use]
+    pub fn fit(space: &RgbSpace, resolution: usize) -> RgbTable {
+        RgbTable::fitted(&space.fit, space.name(), resolution)
+    }
+}
+
+impl RgbAlbedo {
+    /// The reflectance whose colour under D65 is `rgb` (linear sRGB, each
+    /// component in [0, 1]; otherwise an [`Error::Albedo`]), fitted: about
+    /// 10 µs. [`RgbSpace::albedo`] does it in a lookup, in any space.
+    pub fn new(rgb: LinearRgb) -> Result<Self, Error> {
+        RgbSpace::srgb().fit_albedo(rgb)
+    }
+}
+
+impl RgbUnbounded {
+    /// Any linear sRGB colour as a non-negative spectrum:
+    /// [`RgbSpace::srgb`]'s [`unbounded`](RgbSpace::unbounded) (negative
+    /// and NaN components are taken as 0: outside the gamut, there is no
+    /// spectrum). The first call builds sRGB's table.
+    #[must_use]
+    pub fn new(rgb: LinearRgb) -> Self {
+        RgbSpace::srgb().unbounded(rgb)
+    }
+}
+
+impl RgbIlluminant {
+    /// A light of linear sRGB colour `rgb`: [`RgbSpace::srgb`]'s
+    /// [`light`](RgbSpace::light), the CIE's D65 tinted, normalised so that
+    /// (1, 1, 1) has the luminance of a constant spectrum of 1 (`Y = ∫ȳ`).
+    /// The first call builds sRGB's table.
+    #[must_use]
+    pub fn new(rgb: LinearRgb) -> Self {
+        RgbSpace::srgb().light(rgb)
+    }
+}
