@@ -11,10 +11,10 @@ use std::io;
 use std::process::ExitCode;
 
 use speclab::Role;
-use speclab::color::{Exposure, GamutMap, PixelPipeline};
 use speclab_cli::args::{self, fail, finish};
 use speclab_cli::report;
 use speclab_study::StudyError;
+use speclab_study::display::{Exposure, GamutMap, PixelPipeline};
 use speclab_study::evaluate::scene::{Choice, Named};
 use speclab_study::experiments::compare::{self, CompareOptions};
 

@@ -13,11 +13,11 @@ use std::io;
 use std::process::ExitCode;
 
 use speclab::Role;
-use speclab::color::GamutMap;
 use speclab::data::{Light, patches};
 use speclab_cli::args::{self, fail, finish};
 use speclab_cli::report;
 use speclab_study::StudyError;
+use speclab_study::display::GamutMap;
 use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::scene::{Choice, Named};
 use speclab_study::evaluate::viewing::Viewing;

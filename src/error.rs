@@ -19,7 +19,10 @@
 
 use std::fmt;
 
+// speclab-tables' types, documented there (one page per type).
+#[doc(no_inline)]
 pub use speclab_tables::error::{ParseError, ParseErrorKind, Position, ReadError};
+#[doc(no_inline)]
 pub use speclab_tables::validate::{Field, Invalid, SampleError};
 
 /// Errors of the public API.

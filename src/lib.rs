@@ -143,7 +143,8 @@ pub use color::{LinearRgb, Xyz};
 pub use error::Error;
 pub use rand;
 pub use sampling::{BoxAverage, Center, FixedWavelengths, HeroSample, RegularSpectrum};
+#[doc(no_inline)]
+pub use spectrum::{Interpolation, Role};
 pub use spectrum::{
-    Interpolation, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Role, SampledSpectrum, Spectrum, TabulatedSpectrum,
-    data,
+    LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum, Spectrum, TabulatedSpectrum, data,
 };

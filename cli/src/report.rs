@@ -27,8 +27,8 @@ pub use plan::plan_text;
 pub use rules::{depth_table, needs_table, rules_table};
 pub use texture::texture_table;
 
-use speclab::color::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use speclab::color::{LinearRgb, Xyz};
+use speclab_study::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::perceptual;
 use speclab_study::evaluate::scene::Depth;

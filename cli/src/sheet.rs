@@ -24,7 +24,7 @@
 //! ```
 
 use crate::font::{self, GLYPH_HEIGHT};
-use speclab::color::display::Srgb8;
+use speclab_study::display::Srgb8;
 use speclab_study::experiments::swatches::Swatches;
 
 /// Space around the sheet.

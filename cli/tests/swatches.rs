@@ -7,12 +7,12 @@
 use std::num::NonZeroUsize;
 
 use speclab::LinearRgb;
-use speclab::color::display::EncodedSrgb;
-use speclab::color::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use speclab::sampling::reference;
 use speclab_cli::png as png_file;
 use speclab_cli::png::Image;
 use speclab_cli::sheet::{self, Layout};
+use speclab_study::display::EncodedSrgb;
+use speclab_study::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::scene::{Named, builtin_lights, builtin_surfaces};
 use speclab_study::experiments::swatches::{self, SwatchOptions};

@@ -5,12 +5,12 @@
 use std::io::Write;
 use std::path::Path;
 
-use speclab::color::{Exposure, GamutMap, PixelPipeline};
 use speclab::data::lights;
 use speclab::io::Load;
 use speclab::{Role, Xyz};
 use speclab_cli::png::{self, Image};
 use speclab_cli::progress;
+use speclab_study::display::{Exposure, GamutMap, PixelPipeline};
 use speclab_study::evaluate::Named;
 use speclab_study::render::run::{Timed, delta_e, display_white, exact_cost};
 use speclab_study::render::survey::{self, FITTED_M, HERO_SPP, Measured, Row};

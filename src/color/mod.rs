@@ -10,14 +10,11 @@
 //!   means the colour is outside the sRGB gamut, which is information, not
 //!   an error.
 //! - [`srgb`]: the IEC 61966-2-1 transfer function, and sRGB's luminance.
-//! - [`display`]: the pipeline from a colour to a pixel: exposure, gamut
-//!   mapping (clip, or keep hue and luminance), encoding, 8 bits; linear
-//!   and encoded sRGB as different types.
 //! - [`adaptation`]: Bradford chromatic adaptation between whites.
 //! - [`lab`]: CIELAB relative to a white; [`difference`]: CIEDE2000
 //!   (ΔE00) between two colours.
 //! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`] ([`rgb_spectra`]):
-//!   an RGB colour as a spectrum, fitted in CIELAB by [`upsample`], or
+//!   an RGB colour as a spectrum, fitted in CIELAB (`upsample.rs`), or
 //!   looked up in [`rgb_table`].
 //!
 //! [`Xyz`] and [`LinearRgb`] have the whole component-wise operator set
@@ -34,7 +31,6 @@
 
 pub mod adaptation;
 pub mod difference;
-pub mod display;
 pub mod lab;
 pub mod matrix;
 mod rgb;
@@ -47,7 +43,6 @@ pub(crate) mod triple;
 mod upsample;
 mod xyz;
 
-pub use display::{EncodedSrgb, Exposure, GamutMap, PixelPipeline, Srgb8};
 pub use matrix::Matrix;
 pub use rgb::LinearRgb;
 pub use rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded};

@@ -1,5 +1,5 @@
 //! Spectra of RGB colours, each a [`SigmoidPolynomial`] `s(λ)` fitted to
-//! the colour in an [`RgbSpace`] (Jakob and Hanika 2019, as pbrt-v4 and
+//! the colour in an [`RgbSpace`](super::RgbSpace) (Jakob and Hanika 2019, as pbrt-v4 and
 //! Mitsuba 3 use them):
 //!
 //! - [`RgbAlbedo`]: a reflectance, `s(λ)`, in [0, 1], whose colour under

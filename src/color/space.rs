@@ -23,15 +23,15 @@
 //! part D's matrix as printed, which Appendix 2's numbers use. They differ
 //! by up to 5e-4.
 //!
-//! **Spectra of RGB colours** in a space: [`RgbSpace::albedo`],
-//! [`RgbSpace::unbounded`] and [`RgbSpace::light`] look a colour up in the
-//! space's table (`rgb_table`: embedded for the built-in spaces, fitted on
-//! first use for a space of the caller's); a colour's spectrum under the
-//! space's illuminant ([`RgbSpace::illuminant`]) has that colour. Integrals run over
-//! 380–730 nm like every colour here, where the illuminant's white is not
-//! exactly the published white point (D65's chromaticity over 380–730 nm
-//! is off by about 1e-4): the fit balances each channel so that the
-//! perfect reflector is `(1, 1, 1)` exactly.
+//! **Spectra of RGB colours** in a space ([`RgbSpace::albedo`],
+//! [`RgbSpace::unbounded`], [`RgbSpace::light`], defined with the table
+//! and the fit in `space_spectra.rs`) are made under the space's
+//! illuminant ([`RgbSpace::illuminant`]): an albedo's colour under it is
+//! the RGB it was made from. Integrals run over 380–730 nm like every
+//! colour here, where the illuminant's white is not exactly the published
+//! white point (D65's chromaticity over 380–730 nm is off by about 1e-4):
+//! the fit balances each channel so that the perfect reflector is
+//! `(1, 1, 1)` exactly.
 //!
 //! ```
 //! use speclab::color::{LinearRgb, space::RgbSpace};

@@ -34,6 +34,7 @@
 
 use std::path::Path;
 
+#[doc(no_inline)]
 pub use speclab_tables::read::{Format, MAX_BYTES};
 
 use crate::error::Error;

@@ -1,5 +1,6 @@
 //! The hot path of evaluation: from a wavelength to its place in a table,
-//! in a handful of instructions, and the crate's one `unsafe` invariant.
+//! in a handful of instructions, and one of the crate's two places
+//! allowed `unsafe`.
 //!
 //! - Equidistant tables ([`UniformLookup`]): the segment is one
 //!   multiplication away, clamped into the table (NaN and ±∞ included) so
@@ -7,8 +8,10 @@
 //!   [`UniformLookup::row`] returns the segment's row and knot without
 //!   bounds checks. **The invariant**, checked when the lookup is made
 //!   (`UniformLookup::for_table`) and asserted where it is used: the table
-//!   has one row per segment and one knot more. It is the only `unsafe`
-//!   block of the crate.
+//!   has one row per segment and one knot more. Its one `unsafe` block
+//!   relies on it; the crate's other `unsafe` blocks, four, are in
+//!   `spectrum/simd/x86.rs` (AVX loads and stores, and calls into AVX2
+//!   code after the processor said it has it).
 //! - The 1 nm grid of dense tables ([`nearest_nm`]): the nearest whole
 //!   nanometre from 380 to 730 nm as an index 0 to 350, or
 //!   [`OUTSIDE`] (351) outside, where dense tables hold a zero. Computed

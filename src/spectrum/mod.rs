@@ -63,6 +63,9 @@ pub(crate) mod weights;
 
 pub(crate) use speclab_tables::interp;
 pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
+/// Validation of samples (`speclab_tables::validate`, whose pages its own
+/// docs hold; its `Role` and `Interpolation` are this module's too).
+#[doc(no_inline)]
 pub use speclab_tables::validate;
 
 pub use analytic::{Blackbody, Constant, FnSpectrum, planck};
@@ -79,4 +82,5 @@ pub use sigmoid::{SigmoidPolynomial, sigmoid, sigmoid_f32};
 #[doc(hidden)]
 pub use tabulated::Tables;
 pub use tabulated::TabulatedSpectrum;
+#[doc(no_inline)]
 pub use validate::{Interpolation, Role};

@@ -18,6 +18,8 @@
 //! - [`render`]: a small path tracer carrying colour four ways (hero,
 //!   fitted, RGB, prefiltered RGB), the exact image of its own paths, and
 //!   the survey;
+//! - [`display`]: from a colour to a pixel (exposure, gamut mapping,
+//!   encoding, 8 bits), for the programs' pictures;
 //! - [`published`]: the published few-wavelength rules (ASTM E308/E2022,
 //!   Wallis, Meyer, Borges) and spectral prefiltering, on 53 held-apart
 //!   measured reflectances.
@@ -41,6 +43,7 @@
 #![forbid(unsafe_code)]
 
 pub mod carry;
+pub mod display;
 mod error;
 pub mod evaluate;
 pub mod experiments;

@@ -132,23 +132,3 @@ fn bucketing_reference_and_batch_do_not_allocate() {
     });
     assert_eq!(count, 0, "allocated {count} times");
 }
-
-/// The display pipeline, per pixel: exposure, both gamut maps, encoding,
-/// 8 bits.
-#[test]
-fn display_pipeline_does_not_allocate() {
-    use speclab::color::display::{Exposure, GamutMap, PixelPipeline};
-    let white = speclab::sampling::reference::white(&data::lights::F11);
-    let colours = [white, speclab::sampling::reference::xyz(&data::lights::F11, &data::patches::G4)]
-        .map(|x| x.to_linear_srgb());
-    let count = allocations(|| {
-        for gamut in GamutMap::ALL {
-            for exposure in [Exposure::for_white(white), Exposure::fit_white(white), Exposure::new(1e-3)] {
-                for rgb in colours {
-                    black_box(PixelPipeline::new(exposure, gamut).pixel(black_box(rgb)));
-                }
-            }
-        }
-    });
-    assert_eq!(count, 0, "allocated {count} times");
-}

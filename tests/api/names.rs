@@ -6,7 +6,6 @@ use std::fmt::Display;
 use std::str::FromStr;
 
 use speclab::Error;
-use speclab::color::GamutMap;
 use speclab::data::{Light, Patch};
 use speclab::sampling::buckets::BucketRule;
 
@@ -53,7 +52,6 @@ fn core_choices() {
     round_trip(&lights, &speclab::data::lights::NAMES, "a built-in light");
     assert_eq!(Light::APPENDIX.map(|l| l.to_string()), ["A", "D65", "F11"]);
     round_trip(&Patch::ALL, &["E2", "F4", "G4", "H4", "J4", "A1"], "a built-in patch");
-    round_trip(&GamutMap::ALL, &["clip", "chroma"], "a gamut map");
     round_trip(&BucketRule::ALL, &["center", "box"], "a bucket rule");
 }
 

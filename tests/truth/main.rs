@@ -6,7 +6,6 @@
 mod appendix2;
 mod ciede2000;
 mod data;
-mod display;
 mod named;
 mod planck;
 mod spaces;

@@ -11,14 +11,14 @@
 //!
 //! **Data, not a start-up cost.** The built-in spaces' tables are fitted
 //! once, by `cargo run --release -p speclab-tools --bin rgb-tables`, and
-//! embedded at build time ([`RgbTable::SRGB`] and its siblings): nothing is
+//! embedded at build time ([`RgbTable::SRGB`](crate::color::rgb_table::RgbTable::SRGB) and its siblings): nothing is
 //! fitted when a program starts, and a colour of a built-in space is a
-//! `const` ([`RgbTable::const_albedo`]). A table is its file: one
+//! `const` ([`RgbTable::const_albedo`](crate::color::rgb_table::RgbTable::const_albedo)). A table is its file: one
 //! versioned, checksummed layout (`speclab_tables::rgb_file`), `3 · 64³`
 //! triples of `f32`, 9.4 MB per space, shared by every clone (an `Arc`, or
 //! the program's own static data). A space the caller defines builds its
-//! table on first use ([`RgbTable::fit`]: seconds to a minute in a release
-//! build), which [`RgbTable::save`] keeps and [`RgbTable::load`] reads
+//! table on first use ([`RgbTable::fit`](crate::color::rgb_table::RgbTable::fit): seconds to a minute in a release
+//! build), which [`RgbTable::save`](crate::color::rgb_table::RgbTable::save) keeps and [`RgbTable::load`](crate::color::rgb_table::RgbTable::load) reads
 //! back, checked.
 //!
 //! ```
@@ -84,20 +84,20 @@ static SRGB_FILE: [u8; include_bytes!("../../../data/rgb/srgb.rgbt").len()] =
     *include_bytes!("../../../data/rgb/srgb.rgbt");
 
 impl RgbTable {
-    /// Linear sRGB's table ([`RgbSpace::srgb`]'s), embedded at build time
+    /// Linear sRGB's table ([`RgbSpace::srgb`](crate::color::RgbSpace::srgb)'s), embedded at build time
     /// (`data/rgb/srgb.rgbt`).
     pub const SRGB: &RgbTable = &RgbTable::embedded(&SRGB_FILE);
-    /// Display P3's table ([`RgbSpace::display_p3`]'s), from
+    /// Display P3's table ([`RgbSpace::display_p3`](crate::color::RgbSpace::display_p3)'s), from
     /// `speclab-wide-gamut` (feature `wide-gamut`, on by default).
     #[cfg(feature = "wide-gamut")]
     pub const DISPLAY_P3: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::DISPLAY_P3);
-    /// Rec.2020's table ([`RgbSpace::rec2020`]'s), as [`RgbTable::DISPLAY_P3`].
+    /// Rec.2020's table ([`RgbSpace::rec2020`](crate::color::RgbSpace::rec2020)'s), as [`RgbTable::DISPLAY_P3`](crate::color::rgb_table::RgbTable::DISPLAY_P3).
     #[cfg(feature = "wide-gamut")]
     pub const REC2020: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::REC2020);
-    /// ACES2065-1's table ([`RgbSpace::aces2065_1`]'s), as [`RgbTable::DISPLAY_P3`].
+    /// ACES2065-1's table ([`RgbSpace::aces2065_1`](crate::color::RgbSpace::aces2065_1)'s), as [`RgbTable::DISPLAY_P3`](crate::color::rgb_table::RgbTable::DISPLAY_P3).
     #[cfg(feature = "wide-gamut")]
     pub const ACES2065_1: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACES2065_1);
-    /// ACEScg's table ([`RgbSpace::acescg`]'s), as [`RgbTable::DISPLAY_P3`].
+    /// ACEScg's table ([`RgbSpace::acescg`](crate::color::RgbSpace::acescg)'s), as [`RgbTable::DISPLAY_P3`](crate::color::rgb_table::RgbTable::DISPLAY_P3).
     #[cfg(feature = "wide-gamut")]
     pub const ACESCG: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACESCG);
 
@@ -115,7 +115,7 @@ impl RgbTable {
     }
 
     /// A table fitted by `fit` for the space named `name`, `n` nodes per
-    /// axis (clamped into 2 to 256): what [`RgbTable::fit`] makes.
+    /// axis (clamped into 2 to 256): what [`RgbTable::fit`](crate::color::rgb_table::RgbTable::fit) makes.
     pub(crate) fn fitted(fit: &Fit, name: &str, n: usize) -> RgbTable {
         let n = n.clamp(2, rgb_file::MAX_RESOLUTION as usize);
         let header = rgb_file::Header { resolution: n as u32, matrix: fit.to_rgb, name: name.into() };
@@ -135,7 +135,7 @@ impl RgbTable {
         Ok(RgbTable::with_bytes(Bytes::Shared(bytes.into()), header.resolution as usize))
     }
 
-    /// The table in the file at `path`, checked as [`RgbTable::from_bytes`].
+    /// The table in the file at `path`, checked as [`RgbTable::from_bytes`](crate::color::rgb_table::RgbTable::from_bytes).
     pub fn load(path: impl AsRef<Path>) -> Result<RgbTable, Error> {
         let path = path.as_ref();
         let bytes = std::fs::read(path)
@@ -182,8 +182,8 @@ impl RgbTable {
         Ok(RgbAlbedo::from_polynomial(self.lookup(albedo_components(rgb.into())?)))
     }
 
-    /// [`RgbTable::albedo`] at compile time, for a table built into the
-    /// program ([`RgbTable::SRGB`] and its siblings): `None` for a
+    /// [`RgbTable::albedo`](crate::color::rgb_table::RgbTable::albedo) at compile time, for a table built into the
+    /// program ([`RgbTable::SRGB`](crate::color::rgb_table::RgbTable::SRGB) and its siblings): `None` for a
     /// component outside [0, 1], or for a table loaded or fitted at run
     /// time. The same coefficients as at run time, to the bit.
     #[must_use]

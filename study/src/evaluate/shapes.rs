@@ -18,9 +18,9 @@
 //! ```
 
 use crate::StudyError;
+use crate::display::Srgb8;
 use crate::evaluate::scene::Named;
 use speclab::color::RgbAlbedo;
-use speclab::color::Srgb8;
 use speclab::spectrum::{Interpolation, Role, Spectrum, TabulatedSpectrum};
 
 /// The ColorChecker Classic's colours, 8-bit sRGB, in chart order.

@@ -17,7 +17,7 @@
 //! light on top (which matters on F11's spikes). The other ten combinations
 //! are in `converge` and `compare`.
 //!
-//! Pixels go through [`speclab::color::display`]: exposed so that the light's
+//! Pixels go through [`crate::display`]: exposed so that the light's
 //! perfect white just fits the display in its own colour
 //! ([`Exposure::fit_white`], after white balance if asked), then the chosen
 //! gamut map and sRGB.
@@ -44,6 +44,7 @@ use rand::rngs::StdRng;
 use rayon::prelude::*;
 
 use crate::StudyError;
+use crate::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use crate::evaluate::method::{Estimator, Method, derive_seed};
 use crate::evaluate::scene::Named;
 use crate::evaluate::viewing;
@@ -51,7 +52,6 @@ use crate::sampling::choice::{PdfKind, Sampling};
 use crate::sampling::strata::Strata;
 use speclab::color::Xyz;
 use speclab::color::adaptation::bradford;
-use speclab::color::display::{Exposure, GamutMap, PixelPipeline, Srgb8};
 use speclab::sampling::buckets::BucketRule;
 use speclab::sampling::reference;
 use speclab::spectrum::TabulatedSpectrum;

@@ -2,8 +2,10 @@
 //! statistics in units of their standard error (unbiasedness, stability
 //! where each method fails), thread safety, names, finite numbers.
 
+mod alloc;
 mod carry;
 mod depth;
+mod display;
 mod finite;
 mod names;
 mod plan;

@@ -5,6 +5,7 @@ use std::fmt::Display;
 use std::str::FromStr;
 
 use speclab::Error;
+use speclab_study::display::GamutMap;
 use speclab_study::evaluate::method::Method;
 use speclab_study::evaluate::viewing::Normalization;
 use speclab_study::render::Way;
@@ -66,4 +67,5 @@ fn strata_error() {
 fn sampling_choices() {
     round_trip(&Strata::ALL, &["none", "jitter", "kronecker"], "a strata");
     round_trip(&PdfKind::ALL, &["uniform", "visible", "light", "balanced"], "a pdf");
+    round_trip(&GamutMap::ALL, &["clip", "chroma"], "a gamut map");
 }

@@ -10,12 +10,12 @@
 
 use proptest::prelude::*;
 use speclab::LinearRgb;
-use speclab::color::display::{
-    EncodedSrgb, Exposure, GamutMap, PixelPipeline, Srgb8, WHITE_LUMINANCE, clip, reduce_chroma,
-};
 use speclab::color::srgb::luminance;
 use speclab::sampling::reference;
 use speclab::{Xyz, data};
+use speclab_study::display::{
+    EncodedSrgb, Exposure, GamutMap, PixelPipeline, Srgb8, WHITE_LUMINANCE, clip, reduce_chroma,
+};
 
 /// IEC 61966-2-1's constants.
 const TOE: f64 = 0.003_130_8;

@@ -21,7 +21,7 @@
 //! pixel; none allocates.
 //!
 //! ```
-//! use speclab::color::display::{PixelPipeline, Exposure, GamutMap, Srgb8};
+//! use speclab_study::display::{PixelPipeline, Exposure, GamutMap, Srgb8};
 //! use speclab::{data, sampling::reference};
 //! let white = reference::white(&data::lights::D65);
 //! let g4 = reference::xyz(&data::lights::D65, &data::patches::G4).to_linear_srgb(); // red; green < 0
@@ -36,7 +36,7 @@
 //! be measured, mixed or encoded again as if it were linear:
 //!
 //! ```compile_fail
-//! use speclab::color::display::EncodedSrgb;
+//! use speclab_study::display::EncodedSrgb;
 //! use speclab::LinearRgb;
 //! let linear = LinearRgb::new(0.2, 0.4, 0.6);
 //! let encoded = EncodedSrgb::encode(linear);
@@ -46,16 +46,15 @@
 //! Decoding first says what is meant, and compiles:
 //!
 //! ```
-//! # use speclab::{LinearRgb, color::display::EncodedSrgb};
+//! # use speclab::LinearRgb;
+//! # use speclab_study::display::EncodedSrgb;
 //! let linear = LinearRgb::new(0.2, 0.4, 0.6);
 //! let encoded = EncodedSrgb::encode(linear);
 //! assert!(linear.distance(encoded.decode()) < 1e-12);
 //! ```
 
-use crate::color::rgb::LinearRgb;
-use crate::color::srgb::{self, SRGB_TO_XYZ};
-use crate::color::xyz::Xyz;
-use crate::named_choices;
+use speclab::color::srgb::{self, SRGB_TO_XYZ};
+use speclab::{LinearRgb, Xyz, named_choices};
 
 /// A positive factor that linear colours are multiplied by before display.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -150,7 +149,7 @@ pub const WHITE_LUMINANCE: f64 = SRGB_TO_XYZ[1][0] + SRGB_TO_XYZ[1][1] + SRGB_TO
 /// luminance, `g·(1, 1, 1)` with `g = Y / Y_white`, just until every
 /// channel lies in [0, 1]. Colours inside the cube are returned unchanged.
 ///
-/// - **Luminance** `Y` ([`LinearRgb::luminance`]) is kept, because the
+/// - **Luminance** `Y` ([`srgb::luminance`]) is kept, because the
 ///   luminance is linear and the grey has the same: to 1e-12 for components
 ///   up to 10³ in magnitude (rounding only).
 /// - **Hue** is kept: a mixture of a colour and a grey lies on the straight
