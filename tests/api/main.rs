@@ -9,6 +9,7 @@ mod clients;
 mod doc_pages;
 mod fuzz_body;
 mod fuzz_regressions;
+mod imports;
 mod input_errors;
 mod materials;
 mod names;
