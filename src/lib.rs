@@ -21,8 +21,9 @@
 //! Spectra are read by [`io`] at run time, or turned into static data at
 //! compile time by the `speclab-tables` crate (the built-in data, [`data`],
 //! is made so). This crate is the renderer's core: its dependencies are
-//! [`rand`] (re-exported, the version the API names), `speclab-tables` and
-//! `wide` (the SIMD registers of the per-sample arithmetic).
+//! `speclab-tables`, `wide` (the SIMD registers of the per-sample
+//! arithmetic) and, by the default feature, the wide-gamut spaces' tables;
+//! it draws no random numbers (a renderer brings its own sampler).
 //! The accuracy study (trials, the comparison grid, charts and plans) is
 //! the crate `speclab-study`, and what its programs show is `speclab-cli`.
 //!
@@ -141,7 +142,6 @@ pub mod __codegen {
 
 pub use color::{LinearRgb, Xyz};
 pub use error::Error;
-pub use rand;
 pub use sampling::{BoxAverage, Center, FixedWavelengths, HeroSample, RegularSpectrum};
 #[doc(no_inline)]
 pub use spectrum::{Interpolation, Role};

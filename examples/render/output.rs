@@ -74,7 +74,7 @@ pub fn exact_report(o: &Options, setup: &Setup, with_exact: &Render, seconds: f6
     );
 }
 
-/// 8-bit sRGB of `xyz` through `color::display` (exposed to the display
+/// 8-bit sRGB of `xyz` through `speclab_study::display` (exposed to the display
 /// white of `exposed_by`, chroma-reduced into the gamut).
 pub fn srgb8(xyz: &[Xyz], white: Xyz, exposed_by: &[Xyz]) -> Vec<u8> {
     let display = PixelPipeline::new(Exposure::fit_white(display_white(exposed_by, white)), GamutMap::Chroma);

@@ -1,5 +1,5 @@
 //! Random wavelengths: `HeroSample<K, T>`, K wavelengths drawn together
-//! with their XYZ weights, and the Monte Carlo estimator.
+//! with their XYZ weights (the study's estimators average them).
 //!
 //! By default one uniform number `u ∈ [0, 1)` gives the hero wavelength
 //! `λ₀ = 380 + u·W` (W = 350 nm) and `K − 1` rotations `λ₀ + j·W/K`, wrapped

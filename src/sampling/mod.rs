@@ -87,4 +87,4 @@ pub use hero::HeroSample;
 pub use prepared::PreparedLight;
 pub use regular::{BoxAverage, Center, RegularSpectrum};
 pub use wavelengths::{Emission, FixedWavelengths};
-pub use widths::{AtWidth, WIDTHS, with_lanes};
+pub use widths::{AtWidth, with_lanes};

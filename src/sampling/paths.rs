@@ -123,6 +123,6 @@ impl ExactPaths {
             let v = l * t;
             (0..3).for_each(|c| sum[c] += self.weights[c][q] * v);
         }
-        Ok(Xyz::from(sum))
+        Ok(Xyz::of_sums(sum))
     }
 }

@@ -25,7 +25,8 @@
 
 use crate::color::Xyz;
 use crate::error::{Error, Field, Invalid, SampleError};
-use crate::spectrum::simd::slices::{Spread, Sums};
+use crate::spectrum::simd::slices::Sums;
+use crate::spectrum::simd::spread::Spread;
 use crate::spectrum::weights::{self, Weights};
 use crate::spectrum::{Interpolation, Role, Spectrum, interp};
 use crate::spectrum::{integrate, validate};
@@ -167,7 +168,7 @@ impl<L: Spectrum> PreparedLight<L> {
                 }
             }
             if let Some(o) = out.get_mut(i) {
-                *o = Xyz::from(sum);
+                *o = Xyz::of_sums(sum);
             }
             Ok(())
         })

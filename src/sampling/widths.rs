@@ -4,7 +4,7 @@
 //! (`SampledSpectrum<M, T>`), so that they live in registers; a scene's
 //! fitted rule has a size M chosen at run time (by a plan, a budget, a
 //! command line). [`with_lanes`] bridges the two: it calls back with the
-//! smallest compiled width of [`WIDTHS`] that holds M, each width
+//! smallest compiled width (4, 8, 12, 16, 24, 32 or 64) that holds M, each width
 //! monomorphised once. The lanes beyond M weigh nothing
 //! ([`Rule::wavelengths`](crate::sampling::rule::Rule::wavelengths) pads
 //! them), so they change no colour.
@@ -36,7 +36,8 @@ use crate::sampling::rule::MAX_M;
 
 /// The compiled widths, smallest first: multiples of four (a 128-bit
 /// register of `f32`) up to 16, then 24, 32 and [`MAX_M`].
-pub const WIDTHS: [usize; 7] = [4, 8, 12, 16, 24, 32, MAX_M];
+#[cfg(test)]
+const WIDTHS: [usize; 7] = [4, 8, 12, 16, 24, 32, MAX_M];
 
 /// Something done at a compile-time width: a callback for [`with_lanes`].
 pub trait AtWidth {
@@ -47,7 +48,8 @@ pub trait AtWidth {
     fn call<const CAP: usize>(self) -> Self::Output;
 }
 
-/// Calls `f` with the smallest width of [`WIDTHS`] that holds `m`
+/// Calls `f` with the smallest compiled width (4, 8, 12, 16, 24, 32 or
+/// 64) that holds `m`
 /// wavelengths. An [`Error::Count`] unless `1 ≤ m ≤` [`MAX_M`].
 pub fn with_lanes<F: AtWidth>(m: usize, f: F) -> Result<F::Output, Error> {
     macro_rules! widths {

@@ -40,21 +40,12 @@
 
 use std::borrow::Cow;
 
+use crate::spectrum::dense_table::DenseSpectrum;
 use crate::spectrum::float::Float;
 use crate::spectrum::interface::{Pieces, Spectrum};
-use crate::spectrum::lookup::{DENSE_ENTRIES, entry, nearest_nm};
-use crate::spectrum::sampled::{SampledSpectrum, Wavelengths, dense_sample};
+use crate::spectrum::lookup::{DENSE_ENTRIES, nearest_nm};
+use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
-
-/// A spectrum at every whole nanometre from 380 to 730 nm, in `f32` and
-/// `f64`, looked up at the nearest one.
-#[derive(Clone, Debug, PartialEq)]
-pub struct DenseSpectrum {
-    /// At 380, 381, …, 730 nm, then a zero (for wavelengths outside).
-    values: Box<[f64; DENSE_ENTRIES]>,
-    /// The same, rounded to `f32`.
-    values_f32: Box<[f32; DENSE_ENTRIES]>,
-}
 
 impl DenseSpectrum {
     /// `s` at every whole nanometre from 380 to 730 (and rounded to `f32`).
@@ -64,31 +55,14 @@ impl DenseSpectrum {
         let mut at = vec![0.0; knots.len()];
         s.eval_many(&knots, &mut at);
         let values: [f64; DENSE_ENTRIES] = std::array::from_fn(|i| at.get(i).copied().unwrap_or(0.0));
-        let values_f32 = values.map(|v| v as f32);
-        DenseSpectrum { values: Box::new(values), values_f32: Box::new(values_f32) }
-    }
-
-    /// The values at 380, 381, …, 730 nm, in precision `T`.
-    #[must_use]
-    pub fn values<T: Float>(&self) -> &[T; DENSE_ENTRIES - 1] {
-        let all = T::choose_row(&self.values_f32, &self.values);
-        all.first_chunk().expect("351 of 352 entries")
-    }
-
-    /// The values at K wavelengths (a hero sample's or a fixed rule's), at
-    /// the nearest whole nanometre each carries, from the table of the
-    /// wavelengths' precision: one load per wavelength.
-    #[inline(always)]
-    #[must_use]
-    pub fn sample<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> SampledSpectrum<K, T> {
-        dense_sample(&self.values_f32, &self.values, at)
+        DenseSpectrum::from_values(values)
     }
 }
 
 impl Spectrum for DenseSpectrum {
     #[inline(always)]
     fn eval(&self, lambda: f64) -> f64 {
-        entry(&self.values, nearest_nm(lambda))
+        self.at::<f64>(nearest_nm(lambda))
     }
 
     #[inline(always)]
@@ -101,7 +75,7 @@ impl Spectrum for DenseSpectrum {
     #[inline(always)]
     fn eval_many_f32(&self, lambda: &[f32], values: &mut [f32]) {
         for (v, &l) in values.iter_mut().zip(lambda) {
-            *v = entry(&self.values_f32, nearest_nm(f64::from(l)));
+            *v = self.at::<f32>(nearest_nm(f64::from(l)));
         }
     }
 
@@ -109,7 +83,7 @@ impl Spectrum for DenseSpectrum {
     #[inline(always)]
     fn eval_many_nearest(&self, _lambda: &[f64], nearest: &[u16], values: &mut [f64]) {
         for (v, &i) in values.iter_mut().zip(nearest) {
-            *v = entry(&self.values, i);
+            *v = self.at::<f64>(i);
         }
     }
 
@@ -117,14 +91,14 @@ impl Spectrum for DenseSpectrum {
     #[inline(always)]
     fn eval_many_nearest_f32(&self, _lambda: &[f32], nearest: &[u16], values: &mut [f32]) {
         for (v, &i) in values.iter_mut().zip(nearest) {
-            *v = entry(&self.values_f32, i);
+            *v = self.at::<f32>(i);
         }
     }
 
-    /// Its tables: its lookup reaches it behind any pointer.
+    /// Itself: its lookup reaches it behind any pointer.
     #[inline(always)]
-    fn dense_values(&self) -> Option<(&[f32; DENSE_ENTRIES], &[f64; DENSE_ENTRIES])> {
-        Some((&self.values_f32, &self.values))
+    fn as_dense(&self) -> Option<&DenseSpectrum> {
+        Some(self)
     }
 
     /// One load per wavelength ([`DenseSpectrum::sample`]).

@@ -79,9 +79,10 @@
 
 use std::borrow::Cow;
 
+use crate::spectrum::dense_table::DenseSpectrum;
 use crate::spectrum::float::Float;
 use crate::spectrum::float::sealed::Precision;
-use crate::spectrum::sampled::{SampledSpectrum, Wavelengths, dense_sample};
+use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{Interpolation, Role};
 
 /// Where a spectrum is a polynomial: between consecutive `breaks` (nm,
@@ -151,19 +152,18 @@ pub trait Spectrum {
         self.eval_many_f32(lambda, values);
     }
 
-    /// The spectrum's values at every whole nanometre from 380 to 730 nm,
-    /// then a zero (for wavelengths outside), in `f32` and `f64`, if it is
-    /// a dense table: how a dense table's lookup (one load per wavelength,
-    /// its count known at compile time) reaches it behind `&dyn Spectrum`,
-    /// `Box<dyn Spectrum>` or a renderer's own wrapper, through
-    /// [`Spectrum::sample`]. `None` by default.
-    fn dense_values(&self) -> Option<(&[f32; 352], &[f64; 352])> {
+    /// The spectrum as a dense table, if it is one: how a dense table's
+    /// lookup (one load per wavelength, its count known at compile time)
+    /// reaches it behind `&dyn Spectrum`, `Box<dyn Spectrum>` or a
+    /// renderer's own wrapper, through [`Spectrum::sample`]. `None` by
+    /// default.
+    fn as_dense(&self) -> Option<&DenseSpectrum> {
         None
     }
 
     /// The values at K wavelengths (a hero sample's, a fixed rule's, or a
     /// `[T; K]`), in the wavelengths' precision `T`. By default a dense
-    /// table's lookup where [`Spectrum::dense_values`] finds one, and
+    /// table's lookup where [`Spectrum::as_dense`] finds one, and
     /// otherwise through [`Spectrum::eval_many_nearest`] or
     /// [`Spectrum::eval_many_nearest_f32`] (so through a reference or a box
     /// too); a spectrum with a faster way overrides it.
@@ -173,8 +173,8 @@ pub trait Spectrum {
     where
         Self: Sized,
     {
-        if let Some((f32s, f64s)) = self.dense_values() {
-            return dense_sample(f32s, f64s, at);
+        if let Some(dense) = self.as_dense() {
+            return dense.sample(at);
         }
         let mut values = [T::ZERO; K];
         let nearest = at.nearest_nm();
@@ -245,8 +245,8 @@ macro_rules! forward_spectrum {
                 (**self).eval_many_nearest_f32(lambda, nearest, values);
             }
             #[inline]
-            fn dense_values(&self) -> Option<(&[f32; 352], &[f64; 352])> {
-                (**self).dense_values()
+            fn as_dense(&self) -> Option<&DenseSpectrum> {
+                (**self).as_dense()
             }
             fn pieces(&self) -> Option<Pieces<'_>> {
                 (**self).pieces()

@@ -43,6 +43,7 @@
 mod analytic;
 pub mod data;
 mod dense;
+mod dense_table;
 pub(crate) mod float;
 pub(crate) mod integrate;
 mod interface;
@@ -69,7 +70,7 @@ pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
 pub use speclab_tables::validate;
 
 pub use analytic::{Blackbody, Constant, FnSpectrum, planck};
-pub use dense::DenseSpectrum;
+pub use dense_table::DenseSpectrum;
 pub use float::Float;
 pub use interface::{Pieces, Samples, Spectrum};
 pub use mixture::Mixture;

@@ -71,17 +71,3 @@ impl<const K: usize, T: Float> SampledSpectrum<K, T> {
 }
 
 pointwise_spectrum!([const K: usize] SampledSpectrum[K], K, SampledSpectrum::new);
-
-/// A dense table's values at K wavelengths, from its table of the
-/// wavelengths' precision at the nearest whole nanometre each carries: one
-/// load per wavelength ([`DenseSpectrum::sample`](super::DenseSpectrum::sample)
-/// and [`Spectrum::sample`](super::Spectrum::sample) behind any pointer).
-#[inline(always)]
-pub(crate) fn dense_sample<const K: usize, T: Float>(
-    f32s: &[f32; lookup::DENSE_ENTRIES],
-    f64s: &[f64; lookup::DENSE_ENTRIES],
-    at: &impl Wavelengths<K, T>,
-) -> SampledSpectrum<K, T> {
-    let (nearest, table) = (at.nearest_nm(), T::choose_row(f32s, f64s));
-    SampledSpectrum::new(std::array::from_fn(|j| lookup::entry(table, nearest[j])))
-}

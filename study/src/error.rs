@@ -36,6 +36,14 @@ pub enum StudyError {
         /// The wavelengths asked for.
         m: usize,
     },
+    /// Rules of a fitted way that do not share their wavelengths (each
+    /// light's rule must be made at the same wavelengths, as
+    /// `Rule::fit_each` makes them): the rule at `index` differs from the
+    /// first.
+    RulesDiffer {
+        /// Which rule.
+        index: usize,
+    },
     /// A path depth outside 1 ..= `max`.
     Depth {
         /// What was given.
@@ -58,6 +66,10 @@ impl fmt::Display for StudyError {
             StudyError::NoRule { family, m } => write!(
                 f,
                 "expected a light with a {family} rule of {m} wavelengths, found none (no real nodes inside 380–730 nm)"
+            ),
+            StudyError::RulesDiffer { index } => write!(
+                f,
+                "expected rules at one set of wavelengths (as Rule::fit_each makes them), found rule {index} at others"
             ),
             StudyError::Depth { found, max } => {
                 write!(f, "expected a path depth from 1 to {max}, found {found:?}")

@@ -179,3 +179,35 @@ fn hero_u_outside_unit_interval_is_documented() {
     assert_eq!(HeroSample::<4>::new(f64::INFINITY), HeroSample::<4>::new(0.0));
     assert_eq!(HeroSample::<1>::new(1.0), HeroSample::<1>::new(0.0));
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Counts, depths, indices and roles a caller passes: a value or an
+    /// error, never a panic (a power past the limit, an exact scene of any
+    /// depth, a path naming spectra outside the scene, a conductor of any
+    /// two tables).
+    #[test]
+    fn counts_indices_and_roles_take_anything(
+        depth in any::<usize>(),
+        light in any::<usize>(),
+        surfaces in prop::collection::vec(any::<usize>(), 0..6),
+        coefficients in prop::collection::vec(-2.0..2.0f64, 0..6),
+        eta in 0..4usize,
+        k in 0..4usize,
+    ) {
+        use speclab::spectrum::{Conductor, MAX_POWER, Product, Spectrum};
+        let power = Product::power(&data::patches::G4, depth);
+        prop_assert_eq!(power.is_ok(), depth <= MAX_POWER);
+        let spectra: [&dyn Spectrum; 3] = [&data::lights::F11, &data::patches::G4, &data::patches::A1];
+        let scene = reference::ExactPaths::new(&spectra, depth % 8);
+        let path = scene.xyz(light % 5, &surfaces.iter().map(|s| s % 5).collect::<Vec<_>>(), &coefficients);
+        let inside = light % 5 < 3 && surfaces.iter().all(|s| s % 5 < 3);
+        prop_assert_eq!(path.is_ok(), inside);
+        prop_assert!(path.map_or(true, |x| x.is_finite()));
+        let au = &data::conductors::AU;
+        let tables = [au.eta(), au.k(), &data::lights::A, &data::patches::G4];
+        let made = Conductor::new(tables[eta], tables[k]);
+        prop_assert_eq!(made.is_ok(), eta == 0 && k == 1);
+    }
+}

@@ -10,7 +10,7 @@
 use speclab::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
 use speclab::data::{Light, Patch, lights, patches};
 use speclab::sampling::buckets::BucketRule;
-use speclab::sampling::rule::{MAX_M, Rule, RuleKind};
+use speclab::sampling::rule::{MAX_M, Rule};
 use speclab::spectrum::observer;
 use speclab::{BoxAverage, Center, RegularSpectrum, Xyz};
 
@@ -69,7 +69,7 @@ fn unsupported_bucket_counts_are_errors() {
         assert_eq!(err.to_string(), format!("expected a bucket count from 1 to 64, found {m}"));
     }
     let one = Rule::buckets(1, BucketRule::BoxAverage).unwrap();
-    assert_eq!((one.m(), one.kind()), (1, RuleKind::Buckets(BucketRule::BoxAverage)));
+    assert_eq!((one.m(), one.lambda()), (1, &[555.0][..]));
     // A factor shorter than M counts as 0 where it has no value.
     let three = Rule::buckets(3, BucketRule::Center).unwrap();
     let full = three.xyz_of_factors(&[&[1.0, 1.0, 1.0]]);

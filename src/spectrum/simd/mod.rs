@@ -37,6 +37,7 @@ use crate::spectrum::float::Float;
 use crate::spectrum::float::sealed::Vector;
 
 pub(crate) mod slices;
+pub(crate) mod spread;
 #[cfg(target_arch = "x86_64")]
 mod x86;
 
@@ -217,21 +218,25 @@ mod tests {
     /// fused).
     #[test]
     fn a_run_time_count_keeps_the_order() {
-        let w: Vec<f64> = (0..13).map(|i| 1.0 / (f64::from(i) + 1.7)).collect();
+        let w: [Vec<f64>; 3] = [1.7, 2.9, 0.4].map(|s| (0..13).map(|i| 1.0 / (f64::from(i) + s)).collect());
         let v: Vec<f64> = (0..13).map(|i| (f64::from(i) * 0.618_034).fract() - 0.3).collect();
+        let tolerance = if cfg!(target_feature = "fma") { 1e-15 } else { 0.0 };
         for n in 0..=13 {
-            let by_hand = (0..n).fold([0.0; 4], |mut acc, i| {
-                acc[i % 4] += w[i] * v[i];
-                acc
+            let expected = w.each_ref().map(|w| {
+                let by_hand = (0..n).fold([0.0; 4], |mut acc, i| {
+                    acc[i % 4] += w[i] * v[i];
+                    acc
+                });
+                (by_hand[0] + by_hand[2]) + (by_hand[1] + by_hand[3])
             });
-            let expected = (by_hand[0] + by_hand[2]) + (by_hand[1] + by_hand[3]);
-            let tolerance = if cfg!(target_feature = "fma") { 1e-15 } else { 0.0 };
-            for got in [column_sums([&w[..n]; 3], &v[..n]), column_sums([&w[..]; 3], &v[..n])] {
-                assert!(
-                    got.iter().all(|g| (g - expected).abs() <= tolerance),
-                    "n = {n}: {got:?} against {expected}"
-                );
+            let (short, full) = (w.each_ref().map(|w| &w[..n]), w.each_ref().map(|w| &w[..]));
+            for got in [column_sums(short, &v[..n]), column_sums(full, &v[..n])] {
+                let close = got.iter().zip(&expected).all(|(g, e)| (g - e).abs() <= tolerance);
+                assert!(close, "n = {n}: {got:?} against {expected:?}");
             }
         }
+        // Columns of unequal length: the shortest bounds every sum.
+        let uneven = [&w[0][..5], &w[1][..], &w[2][..]];
+        assert_eq!(column_sums(uneven, &v), column_sums(w.each_ref().map(|w| &w[..5]), &v[..5]));
     }
 }

@@ -42,7 +42,7 @@ use std::arch::x86_64::{
 };
 use std::sync::atomic::{AtomicU8, Ordering};
 
-use super::slices::{Spread, each_run, finish_spread, for_each_window};
+use super::spread::{Spread, each_run, finish_spread, for_each_window};
 
 /// Proof that this processor has AVX2 and FMA (see [`Avx2Fma::detect`]).
 #[derive(Clone, Copy, Debug)]
@@ -102,8 +102,8 @@ fn ask() -> bool {
     yes
 }
 
-/// The portable `dot_spread` with one register per vector of four and
-/// fused multiply-adds: two accumulators per channel (even and odd
+/// The batch's sums and spread in AVX2 registers with fused multiply-adds
+/// (the portable form is `slices.rs`'s, over [`column_sums`](super::column_sums)): two accumulators per channel (even and odd
 /// vectors), named so that they stay in registers; the same minimum,
 /// maximum and absolute value in the same order, so the same bits for the
 /// spread.

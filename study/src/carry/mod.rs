@@ -1,7 +1,7 @@
-//! How a renderer carries colour along its paths: one interface,
-//! [`Carry`], over three ways of doing it, and the step from a rule size
-//! chosen at run time to compile-time lanes
-//! ([`speclab::sampling::with_lanes`]).
+//! How the study's path tracer carries colour along its paths: one
+//! interface, [`Carry`], over three ways of doing it (a rule size chosen at
+//! run time reaches compile-time lanes through the core's
+//! [`speclab::sampling::with_lanes`]).
 //!
 //! A path tracer keeps a throughput β from the camera and adds what each
 //! light contributes through it. What β *is* depends on the way colour is

@@ -2,6 +2,7 @@
 
 use std::marker::PhantomData;
 
+use crate::StudyError;
 use crate::carry::Carry;
 use speclab::color::space::RgbSpace;
 use speclab::color::{LinearRgb, Xyz};
@@ -105,17 +106,22 @@ pub struct Fitted<const CAP: usize, T: Float = f64> {
 
 impl<const CAP: usize, T: Float> Fitted<CAP, T> {
     /// The scene's spectra at the rules' wavelengths (`rules[i]` for light
-    /// `i`). An [`Error::NoMass`] for no rules; an [`Error::Count`] for
-    /// a number of rules other than the number of lights, or a rule
-    /// larger than `CAP`.
-    pub fn new(rules: &[Rule], lights: &[impl Spectrum], surfaces: &[impl Spectrum]) -> Result<Self, Error> {
+    /// `i`, all at the same wavelengths, as `Rule::fit_each` makes them).
+    /// An [`Error::NoMass`] for no rules; an [`Error::Count`] for a number
+    /// of rules other than the number of lights, or a rule larger than
+    /// `CAP`; a [`StudyError::RulesDiffer`] for a rule at other wavelengths
+    /// than the first's.
+    pub fn new(
+        rules: &[Rule],
+        lights: &[impl Spectrum],
+        surfaces: &[impl Spectrum],
+    ) -> Result<Self, StudyError> {
         if rules.len() != lights.len() && !rules.is_empty() {
-            return Err(Error::Count {
-                what: "rules, one per light",
-                found: rules.len(),
-                min: lights.len(),
-                max: lights.len(),
-            });
+            let (found, n) = (rules.len(), lights.len());
+            return Err(Error::Count { what: "rules, one per light", found, min: n, max: n }.into());
+        }
+        if let Some(index) = rules.iter().position(|r| r.lambda() != rules[0].lambda()) {
+            return Err(StudyError::RulesDiffer { index });
         }
         let each: Vec<FixedWavelengths<CAP, T>> =
             rules.iter().map(Rule::wavelengths).collect::<Result<_, _>>()?;

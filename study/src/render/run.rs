@@ -5,6 +5,7 @@
 
 use std::time::Instant;
 
+use crate::StudyError;
 use crate::carry::{Carry, Fitted, Hero, Rgb};
 use crate::sampling::choice::PdfKind;
 use speclab::color::lab::lab;
@@ -46,7 +47,7 @@ pub fn wavelength_pdf(o: &Options, setup: &Setup) -> Result<Box<dyn WavelengthPd
 }
 
 /// Builds the way `o` asks for and hands it to `with`.
-pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W::Out, speclab::Error> {
+pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W::Out, StudyError> {
     match o.way {
         Way::Rgb => {
             let mut rgb = Rgb::new(&setup.light_spectra(), &setup.patches);
@@ -136,7 +137,7 @@ struct FittedWidth<'a, W> {
 }
 
 impl<W: WithCarry> AtWidth for FittedWidth<'_, W> {
-    type Output = Result<W::Out, speclab::Error>;
+    type Output = Result<W::Out, StudyError>;
 
     fn call<const CAP: usize>(self) -> Self::Output {
         let mut surfaces: Vec<Albedo<&TabulatedSpectrum>> =
@@ -217,7 +218,7 @@ pub fn delta_e(image: &[Xyz], exact: &[Xyz], white: Xyz) -> [f64; 3] {
 
 /// Renders the way `o` asks for with the exact image of its paths: the
 /// render and its ΔE00 against the exact image ([`delta_e`]).
-pub fn against_exact(o: &Options, setup: &Setup) -> Result<(Render, [f64; 3]), speclab::Error> {
+pub fn against_exact(o: &Options, setup: &Setup) -> Result<(Render, [f64; 3]), StudyError> {
     struct Compare<'a>(&'a Options, &'a Setup);
     impl WithCarry for Compare<'_> {
         type Out = (Render, [f64; 3]);

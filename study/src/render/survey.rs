@@ -142,7 +142,7 @@ pub fn survey(
     o: &Options,
     setup: &Setup,
     mut each: impl FnMut(&Measured),
-) -> Result<Vec<Measured>, speclab::Error> {
+) -> Result<Vec<Measured>, crate::StudyError> {
     let scene = setup.light_names();
     let mut rows = Vec::new();
     let mut push = |way: String, spp: usize, (ns, de, r): (f64, [f64; 3], Render)| {

@@ -69,9 +69,10 @@ pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>
 }
 
 /// [`estimate_with`] for a hero width `k` chosen at run time (the study's),
-/// through the same weighted sum on slices: `k` wavelengths per sample,
-/// `1 ≤ k ≤` [`MAX_WIDTH`] (else an [`Error::Count`]). The same numbers as
-/// `estimate_with::<K>` to rounding, from the same draws.
+/// on slices: `k` wavelengths per sample, `1 ≤ k ≤` [`MAX_WIDTH`] (else an
+/// [`Error::Count`]). The same wavelengths and weights as
+/// `estimate_with::<K>` from the same draws, summed in another order (equal
+/// to rounding: `widths_agree_with_compile_time_ones`).
 pub fn estimate_width<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
     k: usize,
     light: &(impl Spectrum + ?Sized),
@@ -133,9 +134,9 @@ fn rotation(u: f64, j: usize, k: usize) -> f64 {
     if v >= 1.0 { v - 1.0 } else { v }
 }
 
-/// `Σᵢ wᵢ·vᵢ` in four interleaved partial sums (the core's order for a
-/// rule of run-time size, so that a width of 4 gives the numbers a
-/// `HeroSample<4>` gives).
+/// `Σᵢ wᵢ·vᵢ` in four interleaved partial sums, `(a₀ + a₂) + (a₁ + a₃)`:
+/// the order the study's figures were made in (the core's column sums add
+/// in the same order; a study's run-time width cannot name them).
 fn dot(w: &[f64], values: &[f64]) -> f64 {
     let n = w.len().min(values.len());
     let ((w4, w_rest), (v4, v_rest)) = (w[..n].as_chunks::<4>(), values[..n].as_chunks::<4>());
@@ -149,4 +150,48 @@ fn dot(w: &[f64], values: &[f64]) -> f64 {
         acc[l] += w * v;
     }
     (acc[0] + acc[2]) + (acc[1] + acc[3])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+    use speclab::data::{lights, patches};
+
+    /// A width chosen at run time gives the compile-time width's estimate
+    /// from the same draws (to rounding: another order of the sums), under
+    /// the uniform pdf and one that follows F11, for every strata.
+    #[test]
+    fn widths_agree_with_compile_time_ones() {
+        let n = NonZeroUsize::new(64).expect("64");
+        let f11 = speclab::sampling::pdf::LightPdf::light(&lights::F11).expect("bright");
+        let pdfs: [&dyn WavelengthPdf; 2] = [&Uniform, &f11];
+        for pdf in pdfs {
+            for strata in Strata::ALL {
+                let rng = || rand::rngs::StdRng::seed_from_u64(9);
+                let (light, surface) = (&lights::F11, &patches::G4);
+                let one = estimate_width(1, light, surface, n, pdf, strata, &mut rng()).expect("width 1");
+                let four = estimate_width(4, light, surface, n, pdf, strata, &mut rng()).expect("width 4");
+                let want_one = estimate_with::<1, _, _>(light, surface, n, pdf, strata, &mut rng());
+                let want_four = estimate_with::<4, _, _>(light, surface, n, pdf, strata, &mut rng());
+                for (got, want) in [(one, want_one), (four, want_four)] {
+                    let close = (got - want).to_array().iter().all(|d| d.abs() <= 1e-12 * want.y);
+                    assert!(close, "{strata:?}: {got:?} against {want:?}");
+                }
+            }
+        }
+    }
+
+    /// The fractional part as the core's hero constructors take it.
+    #[test]
+    fn fract_matches_floor() {
+        for u in [0.0f64, 0.25, 1.0, 1.25, -0.25, -1.0, -1e-17, 3.5e15 + 0.5, -7.75, 0.999_999_999] {
+            let want = u - u.floor();
+            let want = if want < 1.0 { want } else { 0.0 };
+            assert_eq!(fract(u), want, "u = {u}");
+        }
+        for u in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 4.6e15, -1e300] {
+            assert_eq!(fract(u), 0.0, "u = {u}");
+        }
+    }
 }

@@ -15,8 +15,7 @@
 //!
 //! [`Strata::point`] takes a sample's index and a uniform number (the path
 //! tracer's own): no random-number generator is involved. [`Strata::points`] draws the
-//! uniform numbers from an `Rng` (the `rand` re-exported as
-//! `speclab::rand`) for a whole estimate.
+//! uniform numbers from an `Rng` (`rand`) for a whole estimate.
 //!
 //! ```
 //! use speclab_study::sampling::strata::Strata;

@@ -105,7 +105,7 @@ fn rgb_is_triples() {
 }
 
 /// Indices past the scene give nothing (no panic), and a fitted way needs
-/// one rule per light.
+/// one rule per light, all at the same wavelengths.
 #[test]
 fn indices_past_the_scene_give_nothing() {
     let (light, surface) = (&lights::F11, &patches::G4);
@@ -119,6 +119,11 @@ fn indices_past_the_scene_give_nothing() {
     assert_eq!(fitted.albedo(&(), 1), SampledSpectrum::zero());
     assert!(fitted.emitted(&(), 0, fitted.one()).y > 0.0);
     assert!(Fitted::<12>::new(&rule, &[light, &lights::A], &[surface]).is_err());
+    let other = Rule::fit(&[&lights::A], 10).expect("fits");
+    let mixed = [rule[0].clone(), other];
+    assert_ne!(mixed[0].lambda(), mixed[1].lambda());
+    let err = Fitted::<12>::new(&mixed, &[light, &lights::A], &[surface]).err();
+    assert!(matches!(err, Some(speclab_study::StudyError::RulesDiffer { index: 1 })), "{err:?}");
     let rgb = Rgb::new(&[light], &[surface]);
     assert_eq!(rgb.emitted(&(), 3, rgb.one()), Xyz::ZERO);
     assert_eq!(rgb.albedo(&(), 3), LinearRgb::default());

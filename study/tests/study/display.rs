@@ -1,4 +1,4 @@
-//! The display pipeline (`color::display`): the IEC 61966-2-1 transfer
+//! The display pipeline (`speclab_study::display`): the IEC 61966-2-1 transfer
 //! function at its published breakpoints and constants, round trips through
 //! 8 bits, exposure, and the gamut maps' promises (every output in [0, 1];
 //! the chroma map keeps luminance and hue within the tolerances its doc
