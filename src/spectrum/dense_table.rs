@@ -7,7 +7,7 @@
 //!
 //! ```
 //! use speclab::{data::patches, HeroSample, Spectrum};
-//! use speclab::sampling::wavelengths::Wavelengths;
+//! use speclab::spectrum::Wavelengths;
 //! use speclab::spectrum::DenseSpectrum;
 //! let g4 = DenseSpectrum::new(&patches::G4);
 //! let h = HeroSample::<4, f32>::new(0.25);
