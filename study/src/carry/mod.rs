@@ -42,7 +42,7 @@
 //! }
 //! let off = (one_bounce(&rgb, 0.0).y - exact.y).abs() / exact.y;
 //! assert!(off > 0.05, "RGB misses F11's lines: {off}");
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab_study::StudyError>(())
 //! ```
 
 mod ways;

@@ -25,7 +25,7 @@
 //! let (image, de00) = render::run::against_exact(&options, &setup)?;
 //! assert_eq!(image.xyz.len(), 64);
 //! assert!(de00[0] < 1.0, "mean ΔE00 {}", de00[0]); // a rule of 10 under F11
-//! # Ok::<(), speclab::Error>(())
+//! # Ok::<(), speclab_study::StudyError>(())
 //! ```
 
 pub mod exact;
