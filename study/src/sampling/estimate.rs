@@ -91,8 +91,9 @@ pub fn estimate_width<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
     let (light_at, surface_at) = (&mut light_at[..k], &mut surface_at[..k]);
     let per_k = 1.0 / k as f64;
     let mut sum = Xyz::ZERO;
+    // Every strata's points are in [0, 1) (`Strata::point`), as the
+    // rotations need.
     for u in strata.points(n.get(), k, rng) {
-        let u = fract(u);
         for (j, l) in lambda.iter_mut().enumerate() {
             let (drawn, inv_pdf) = pdf.sample_with_inv_pdf(rotation(u, j, k));
             let (cmf, s) = (observer::xyz_bar(drawn), inv_pdf * per_k);
@@ -109,22 +110,6 @@ pub fn estimate_width<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
         );
     }
     Ok(sum / n.get() as f64)
-}
-
-/// `u − ⌊u⌋` in [0, 1), as the core's hero constructors take it: `u`
-/// itself in the usual case; 0 for NaN, ±∞ and magnitudes of 2⁵² and more.
-fn fract(u: f64) -> f64 {
-    if (0.0..1.0).contains(&u) {
-        return u;
-    }
-    // False for NaN too.
-    let exact_integer_part = u.abs() < 4_503_599_627_370_496.0;
-    if !exact_integer_part {
-        return 0.0;
-    }
-    let f = u - (u as i64) as f64;
-    let f = if f < 0.0 { f + 1.0 } else { f };
-    if f < 1.0 { f } else { 0.0 }
 }
 
 /// Rotation `j` of `k` from `u ∈ [0, 1)`: `(u + j/k) mod 1`, as
@@ -179,19 +164,6 @@ mod tests {
                     assert!(close, "{strata:?}: {got:?} against {want:?}");
                 }
             }
-        }
-    }
-
-    /// The fractional part as the core's hero constructors take it.
-    #[test]
-    fn fract_matches_floor() {
-        for u in [0.0f64, 0.25, 1.0, 1.25, -0.25, -1.0, -1e-17, 3.5e15 + 0.5, -7.75, 0.999_999_999] {
-            let want = u - u.floor();
-            let want = if want < 1.0 { want } else { 0.0 };
-            assert_eq!(fract(u), want, "u = {u}");
-        }
-        for u in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 4.6e15, -1e300] {
-            assert_eq!(fract(u), 0.0, "u = {u}");
         }
     }
 }
