@@ -188,12 +188,12 @@ impl Carry for Prefilter {
 
     #[inline]
     fn emitted(&self, _path: &(), light: usize, beta: LinearRgb) -> Xyz {
-        self.space.to_xyz((beta * self.lights[light]).to_array())
+        self.lights.get(light).map_or(Xyz::ZERO, |&l| self.space.to_xyz((beta * l).to_array()))
     }
 
     #[inline]
     fn albedo(&self, _path: &(), surface: usize) -> LinearRgb {
-        self.surfaces[surface]
+        self.surfaces.get(surface).copied().unwrap_or_default()
     }
 
     /// The throughput's Y relative to a white path's under the lights' sum.
@@ -230,5 +230,15 @@ mod tests {
         let two = Prefilter::new(Space::Xyz, &[&lights::F11, &lights::A], &[&patches::G4]).unwrap();
         let white = reference::white(&lights::A);
         assert!((two.emitted(&(), 1, two.one()).y - white.y).abs() < 1e-9 * white.y);
+    }
+
+    /// A light or surface index past the scene gives nothing, as the other
+    /// ways of carrying colour do.
+    #[test]
+    fn indices_past_the_scene_give_nothing() {
+        let carry = Prefilter::new(Space::Sharp, &[&lights::F11], &[&patches::G4]).unwrap();
+        assert_eq!(carry.emitted(&(), 1, carry.one()), Xyz::ZERO);
+        assert_eq!(carry.albedo(&(), 1), LinearRgb::default());
+        assert!(carry.emitted(&(), 0, carry.one()).y > 0.0);
     }
 }
