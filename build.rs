@@ -34,6 +34,7 @@ fn main() {
             .unwrap_or_else(|e| fail(&e));
     let basis = ["S0", "S1", "S2"].map(|s| (format!("data/daylight/{s}.csv"), s.to_string()));
     out += &module("daylight", basis, Role::Basis).unwrap_or_else(|e| fail(&e));
+    out += &observers().unwrap_or_else(|e| fail(&e));
     out += &conductors().unwrap_or_else(|e| fail(&e));
     out += &glasses().unwrap_or_else(|e| fail(&e));
     out += &matrix().unwrap_or_else(|e| fail(&e));
@@ -44,6 +45,20 @@ fn main() {
     speclab_tables::rgb_file::check_file(Path::new(table)).unwrap_or_else(|e| fail(&e));
     let dest = Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("data.rs");
     std::fs::write(&dest, out).expect("OUT_DIR is writable");
+}
+
+/// The CIE's 1 nm observers (`data/observers/`), as `[[f64; 3]; N]`
+/// statics with their first wavelength and step.
+fn observers() -> Result<String, String> {
+    let mut code = String::from("pub mod observers {\n");
+    for (file, name) in [("cie1931-2", "CIE_1931_2"), ("cie1964-10", "CIE_1964_10")] {
+        let path = format!("data/observers/{file}.csv");
+        println!("cargo:rerun-if-changed={path}");
+        let text = std::fs::read_to_string(&path).map_err(|e| format!("{path}: {e}"))?;
+        let table = speclab_tables::observer::parse_observer(&text, &path).map_err(|e| e.to_string())?;
+        code += &table.source(name);
+    }
+    Ok(code + "}\n")
 }
 
 /// `pub mod {name} { … }` with one static per `(file, Rust name)`.
@@ -158,8 +173,8 @@ fn conductors() -> Result<String, speclab_tables::Error> {
     ))
 }
 
-/// The glasses of `data/glasses.csv`: `glass,B1,B2,B3,C1,C2,C3` rows (C in
-/// µm²), every coefficient finite and the C non-negative.
+/// The glasses of `data/glasses.csv`: `glass,B1,B2,B3,C1,C2,C3,source` rows
+/// (C in µm²), every coefficient finite and the C non-negative.
 fn glasses() -> Result<String, String> {
     let path = "data/glasses.csv";
     println!("cargo:rerun-if-changed={path}");
@@ -172,27 +187,27 @@ fn glasses() -> Result<String, String> {
         }
         let fields: Vec<&str> = line.split(',').map(str::trim).collect();
         let at = format!("{path}:{}", i + 1);
-        if fields.len() != 7 {
+        if fields.len() != 8 {
             return Err(format!(
-                "{at}: expected a glass and six coefficients, found {} fields",
+                "{at}: expected a glass, six coefficients and a source, found {} fields",
                 fields.len()
             ));
         }
         let mut c = [0.0; 6];
-        for (j, (v, field)) in c.iter_mut().zip(&fields[1..]).enumerate() {
+        for (j, (v, field)) in c.iter_mut().zip(&fields[1..7]).enumerate() {
             *v = field
                 .parse::<f64>()
                 .ok()
                 .filter(|v| v.is_finite() && (j < 3 || *v >= 0.0))
                 .ok_or_else(|| format!("{at}: expected a finite coefficient (C ≥ 0), found {field:?}"))?;
         }
-        entries.push((fields[0].to_string(), c));
+        entries.push((fields[0].to_string(), c, fields[7].to_string()));
     }
     let statics: Vec<String> = entries
         .iter()
-        .map(|(glass, c)| {
+        .map(|(glass, c, source)| {
             format!(
-                "/// SCHOTT {glass}: the catalogue's Sellmeier formula (`data/glasses.csv`).\n\
+                "/// {glass}: the Sellmeier formula of {source} (`data/glasses.csv`).\n\
                  pub static {}: crate::spectrum::Sellmeier = crate::spectrum::Sellmeier::from_coefficients(\
                  [{:?}, {:?}, {:?}], [{:?}, {:?}, {:?}]);\n",
                 identifier(glass),
@@ -205,7 +220,7 @@ fn glasses() -> Result<String, String> {
             )
         })
         .collect();
-    let names: Vec<&str> = entries.iter().map(|(g, _)| g.as_str()).collect();
+    let names: Vec<&str> = entries.iter().map(|(g, ..)| g.as_str()).collect();
     Ok(format!(
         "pub mod glasses {{\n{}{}}}\n",
         statics.concat(),

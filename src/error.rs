@@ -152,6 +152,35 @@ pub enum Error {
         /// The value found there.
         value: f64,
     },
+    /// A wavelength range that is not `0 < min < max`, finite.
+    Range {
+        /// The lower end given, nm.
+        min: f64,
+        /// The upper end given, nm.
+        max: f64,
+    },
+    /// A wavelength range beyond an observer's data.
+    RangeOutside {
+        /// The range asked for, nm.
+        range: [f64; 2],
+        /// The observer's name.
+        observer: &'static str,
+        /// The range its data cover, nm.
+        data: [f64; 2],
+    },
+    /// A wavelength step that is not positive, finite and at most the
+    /// range's width.
+    Step {
+        /// The step given, nm.
+        step: f64,
+        /// The range's width, nm.
+        width: f64,
+    },
+    /// A light with no power under ȳ where tristimulus values are summed.
+    Dark {
+        /// The range summed over, nm.
+        range: [f64; 2],
+    },
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
         /// What was looked up, e.g. `a built-in light`.
@@ -237,6 +266,21 @@ impl fmt::Display for Error {
                     f,
                     "surface {index}: expected a reflectance from -1000 to 1000, found {value} at {lambda} nm"
                 )
+            }
+            Error::Range { min, max } => {
+                write!(f, "expected a wavelength range 0 < min < max nm, finite, found {min}–{max}")
+            }
+            Error::RangeOutside { range: [a, b], observer, data: [lo, hi] } => {
+                write!(
+                    f,
+                    "expected a range within the {observer} observer's data ({lo}–{hi} nm), found {a}–{b} nm"
+                )
+            }
+            Error::Step { step, width } => {
+                write!(f, "expected a wavelength step in (0, {width}] nm, found {step}")
+            }
+            Error::Dark { range: [a, b] } => {
+                write!(f, "expected a light with power under ȳ within {a}–{b} nm, found none")
             }
             Error::UnknownName { what, expected, found } if expected.len() <= 12 => {
                 write!(f, "expected {what} ({}), found {found:?}", or_list(expected.iter()))

@@ -119,6 +119,7 @@ mod doc_pages {
 }
 
 pub mod color;
+pub mod colorimetry;
 pub mod error;
 pub mod io;
 mod names;

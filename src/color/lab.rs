@@ -52,6 +52,25 @@ pub fn lab(xyz: Xyz, white: Xyz) -> [f64; 3] {
     [116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)]
 }
 
+/// The XYZ of CIELAB `[L*, a*, b*]` relative to `white`: the inverse of
+/// [`lab`] (CIE 015:2018, 8.2.1), exact to rounding for ratios within
+/// ±[`MAX_RATIO`].
+///
+/// ```
+/// use speclab::{Xyz, color::lab::{lab, xyz_from_lab}};
+/// // colour-science's Lab_to_XYZ test, D65 white at xy (0.3127, 0.3290).
+/// let white = Xyz::from_xy_luminance([0.3127, 0.3290], 100.0);
+/// let xyz = xyz_from_lab([41.527875844653451, 52.638583607158087, 26.923219366067170], white);
+/// assert!((xyz - Xyz::new(20.654008, 12.197225, 5.136952)).to_array().iter().all(|d| d.abs() < 1e-5));
+/// ```
+#[must_use]
+pub fn xyz_from_lab([l, a, b]: [f64; 3], white: Xyz) -> Xyz {
+    let fy = (l + 16.0) / 116.0;
+    let (fx, fz) = (fy + a / 500.0, fy - b / 200.0);
+    let inverse = |u: f64| if u > DELTA { u * u * u } else { 3.0 * DELTA * DELTA * (u - 4.0 / 29.0) };
+    Xyz::new(inverse(fx) * white.x, inverse(fy) * white.y, inverse(fz) * white.z)
+}
+
 /// The Jacobian of [`lab`] at `xyz`: `d[L*, a*, b*] / d[X, Y, Z]`, rows by
 /// Lab component (zero where a white component is not positive).
 #[must_use]

@@ -10,7 +10,8 @@
 //!   means the colour is outside the sRGB gamut, which is information, not
 //!   an error.
 //! - [`srgb`]: the IEC 61966-2-1 transfer function, and sRGB's luminance.
-//! - [`adaptation`]: Bradford chromatic adaptation between whites.
+//! - [`adaptation`]: chromatic adaptation between whites (von Kries,
+//!   Bradford, CAT02, CAT16), as a function or a matrix.
 //! - [`lab`]: CIELAB relative to a white; [`difference`]: CIEDE2000
 //!   (ΔE00) between two colours.
 //! - [`RgbAlbedo`], [`RgbUnbounded`], [`RgbIlluminant`] ([`rgb_spectra`]):

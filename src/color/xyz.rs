@@ -56,6 +56,37 @@ impl Xyz {
         Xyz { x, y, z }
     }
 
+    /// The chromaticity `[x, y] = [X, Y] / (X + Y + Z)`; `None` where
+    /// `X + Y + Z` is zero (black has none).
+    ///
+    /// ```
+    /// use speclab::Xyz;
+    /// let [x, y] = Xyz::new(95.047, 100.0, 108.883).xy().unwrap();
+    /// assert!((x - 0.312727).abs() < 1e-6 && (y - 0.329023).abs() < 1e-6);
+    /// assert_eq!(Xyz::ZERO.xy(), None);
+    /// ```
+    #[must_use]
+    pub fn xy(self) -> Option<[f64; 2]> {
+        let sum = self.x + self.y + self.z;
+        (sum != 0.0).then(|| [self.x / sum, self.y / sum])
+    }
+
+    /// The XYZ of chromaticity `[x, y]` at luminance `Y` (xyY); zero where
+    /// `y` is zero.
+    ///
+    /// ```
+    /// use speclab::Xyz;
+    /// let white = Xyz::from_xy_luminance([0.3127, 0.3290], 100.0);
+    /// assert!((white.x - 95.0456).abs() < 1e-4 && (white.z - 108.9058).abs() < 1e-4);
+    /// ```
+    #[must_use]
+    pub fn from_xy_luminance([x, y]: [f64; 2], luminance: f64) -> Xyz {
+        if y == 0.0 {
+            return Xyz::ZERO;
+        }
+        Xyz::new(x * luminance / y, luminance, (1.0 - x - y) * luminance / y)
+    }
+
     /// A renderer's convention: this XYZ (the assignment's, spectrum·nm)
     /// divided by ∫ȳ over 380–730 nm ([`Y_BAR_INTEGRAL`]), so that a
     /// constant spectrum of 1 has `Y = 1` (see the module overview).

@@ -35,13 +35,14 @@
 use std::path::Path;
 
 #[doc(no_inline)]
-pub use speclab_tables::read::{Format, MAX_BYTES};
+pub use speclab_tables::read::{Extend, Format, MAX_BYTES};
 
 use crate::error::Error;
 use crate::spectrum::{Interpolation, Role, TabulatedSpectrum};
 
-/// How to load: the role, the interpolation (by default the role's) and the
-/// format (by default detected).
+/// How to load: the role, the interpolation (by default the role's), the
+/// format (by default detected) and what to do with samples short of
+/// 380–730 nm (by default refuse them: [`Extend`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Load {
     /// What the spectrum is; sets validation and clamping.
@@ -50,13 +51,16 @@ pub struct Load {
     pub interpolation: Interpolation,
     /// The format, or `None` to detect it.
     pub format: Option<Format>,
+    /// Samples short of 380–730 nm: refused, zero outside, or their end
+    /// values held to 360–830 nm.
+    pub extend: Extend,
 }
 
 impl Load {
     /// Loading as `role`, with its interpolation and a detected format.
     #[must_use]
     pub fn new(role: Role) -> Self {
-        Load { role, interpolation: role.interpolation(), format: None }
+        Load { role, interpolation: role.interpolation(), format: None, extend: Extend::Refuse }
     }
 
     /// The same, with `interpolation` stated explicitly.
@@ -71,9 +75,27 @@ impl Load {
         Load { format: Some(format), ..self }
     }
 
+    /// The same, with samples short of 380–730 nm treated as `extend` says.
+    ///
+    /// ```
+    /// use speclab::{Role, io::{Extend, Load}};
+    /// let cornell = "400,0.5\n500,0.6\n600,0.7\n700,0.8\n";
+    /// assert!(Load::new(Role::Reflectance).text(cornell, "box.csv").is_err());
+    /// let held = Load::new(Role::Reflectance).with_extend(Extend::Hold).text(cornell, "box.csv")?;
+    /// assert_eq!((held.eval(360.0), held.eval(830.0)), (0.5, 0.8));
+    /// let zero = Load::new(Role::Reflectance).with_extend(Extend::Zero).text(cornell, "box.csv")?;
+    /// assert_eq!((zero.eval(390.0), zero.eval(400.0)), (0.0, 0.5));
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    #[must_use]
+    pub fn with_extend(self, extend: Extend) -> Self {
+        Load { extend, ..self }
+    }
+
     /// A spectrum from `text`; `origin` names it in errors.
     pub fn text(&self, text: &str, origin: &str) -> Result<TabulatedSpectrum, Error> {
-        let s = speclab_tables::read::samples(text, origin, self.role, self.interpolation, self.format)?;
+        let (role, interpolation, format) = (self.role, self.interpolation, self.format);
+        let s = speclab_tables::read::samples_with(text, origin, role, interpolation, format, self.extend)?;
         Ok(TabulatedSpectrum::from_validated(s.lambda, s.values, self.role, self.interpolation))
     }
 

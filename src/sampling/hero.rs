@@ -17,7 +17,7 @@
 //! of pdf 0, for example one [terminated](HeroSample::terminate_secondary),
 //! contributes nothing). The constructors without an observer weigh by the
 //! dense one (`DenseObserver`: a load per wavelength, as pbrt-v4); the
-//! exact one ([`Cie1931`]) is [`HeroSample::exact`] and the `…_with`
+//! exact one ([`AssignmentObserver`]) is [`HeroSample::exact`] and the `…_with`
 //! constructors' choice: an estimate judged against the exact integrals
 //! uses it.
 //!
@@ -44,7 +44,7 @@ use crate::error::Error;
 use crate::sampling::pdf::WavelengthPdf;
 use crate::sampling::wavelengths::{Weighted, weighted_wavelengths};
 use crate::spectrum::DenseObserver;
-use crate::spectrum::observer::{Cie1931, Observer};
+use crate::spectrum::observer::{AssignmentObserver, Observer};
 use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum};
 
 /// K wavelengths drawn together (a hero and K − 1 companions), each with
@@ -77,7 +77,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     /// The uniform hero sample for `u`, weighted by the dense observer
     /// ([`DenseObserver`]: the CIE 1931 observer at the nearest whole
     /// nanometre, as pbrt-v4 looks it up; zero outside 380–730 nm, where
-    /// [`Cie1931`] has x̄, ȳ, z̄ up to 780 nm; over dense spectra its
+    /// [`AssignmentObserver`] has x̄, ȳ, z̄ up to 780 nm; over dense spectra its
     /// estimates are unbiased for the integral of the 1 nm steps, whose ∫ȳ
     /// is 6e-8 from the exact one): the fast path, and the one a renderer
     /// wants.
@@ -97,14 +97,14 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
         Self::with_observer(u, &DenseObserver)
     }
 
-    /// [`HeroSample::new`] weighted by the exact observer ([`Cie1931`],
+    /// [`HeroSample::new`] weighted by the exact observer ([`AssignmentObserver`],
     /// the interpolated 5 nm tables of Appendix 1): the reference's
     /// estimator, unbiased for the exact integrals. Costs a cubic
     /// evaluation of the three matching functions per wavelength.
     #[inline(always)]
     #[must_use]
     pub fn exact(u: T) -> Self {
-        Self::with_observer(u, &Cie1931)
+        Self::with_observer(u, &AssignmentObserver)
     }
 
     /// [`HeroSample::new`] with the weights of `observer`.
@@ -140,7 +140,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
         Self::from_pdf_with(u, pdf, &DenseObserver)
     }
 
-    /// [`HeroSample::from_pdf`] with the weights of `observer` ([`Cie1931`]
+    /// [`HeroSample::from_pdf`] with the weights of `observer` ([`AssignmentObserver`]
     /// for the exact ones).
     #[inline(always)]
     #[must_use]
@@ -159,7 +159,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     /// (1/nm), from a renderer's own sampler and distribution, weighted by
     /// the dense observer (zero outside 380–730 nm: a renderer drawing
     /// from 360–830 nm gets nothing from the wavelengths outside; use
-    /// [`HeroSample::from_wavelengths_with`] and [`Cie1931`] for x̄, ȳ, z̄
+    /// [`HeroSample::from_wavelengths_with`] and [`AssignmentObserver`] for x̄, ȳ, z̄
     /// up to 780 nm). Each wavelength must be finite and each pdf
     /// finite and non-negative with a finite reciprocal (else an
     /// [`Error::SampleWavelength`]); a pdf of 0 marks a wavelength that

@@ -86,9 +86,59 @@ const BOLTZMANN: f64 = 1.380_649e-23;
 /// Wien's displacement constant, m·K (CODATA 2018).
 const WIEN: f64 = 2.897_771_955e-3;
 
+/// Planck's radiation constants, chosen by name: [`planck`] and
+/// [`Blackbody`] use CODATA 2018's, the CIE's daylight and Planckian loci
+/// its own c₂ (`lights::daylight_with`, `colorimetry::planckian_xy` take
+/// either, so that a blackbody and a daylight agree by choice).
+///
+/// ```
+/// use speclab::spectrum::PlanckConstants;
+/// let (codata, cie) = (PlanckConstants::CODATA_2018, PlanckConstants::CIE);
+/// assert!((codata.c2 - 1.438_776_877e-2).abs() < 1e-11);
+/// assert_eq!(cie.c2, 1.4388e-2);
+/// // colour-science: planck_law(500e-9, 5500) = 20472701909806.5 W·sr⁻¹·m⁻³.
+/// assert!((cie.radiance(500.0, 5500.0) * 1e9 / 20_472_701_909_806.5 - 1.0).abs() < 1e-13);
+/// assert_eq!(codata.radiance(600.0, 6000.0), speclab::spectrum::planck(600.0, 6000.0));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlanckConstants {
+    /// The first radiation constant for spectral radiance, c₁L = 2hc², W·m²·sr⁻¹.
+    pub c1: f64,
+    /// The second radiation constant c₂ = hc/k, m·K.
+    pub c2: f64,
+}
+
+impl PlanckConstants {
+    /// CODATA 2018 (exact h, c and k): c₂ = 1.438 776 877…e-2 m·K.
+    pub const CODATA_2018: PlanckConstants =
+        PlanckConstants { c1: 2.0 * PLANCK * LIGHT * LIGHT, c2: PLANCK * LIGHT / BOLTZMANN };
+    /// The CIE's c₂ = 1.4388e-2 m·K (CIE 015:2018: the temperature scale
+    /// of its loci and of D65's 6504 K), with c₁ = 3.741771e-16 W·m² / π
+    /// (2πhc² to seven digits, as colour-science's `planck_law` takes it).
+    pub const CIE: PlanckConstants =
+        PlanckConstants { c1: 3.741_771e-16 / std::f64::consts::PI, c2: 1.4388e-2 };
+
+    /// Planck's law with these constants: spectral radiance at `lambda` nm
+    /// and `kelvin`, W·sr⁻¹·m⁻²·nm⁻¹; 0 at wavelengths that are not positive.
+    #[must_use]
+    pub fn radiance(self, lambda: f64, kelvin: f64) -> f64 {
+        self.per_m(lambda, kelvin) * 1e-9
+    }
+
+    /// Per metre of wavelength, W·sr⁻¹·m⁻³.
+    fn per_m(self, lambda: f64, kelvin: f64) -> f64 {
+        if lambda <= 0.0 {
+            return 0.0;
+        }
+        let l = lambda * 1e-9;
+        self.c1 / (l * l * l * l * l * (self.c2 / (l * kelvin)).exp_m1())
+    }
+}
+
 /// Planck's law: a blackbody's spectral radiance at `lambda` nm and
-/// `kelvin`, in W·sr⁻¹·m⁻²·nm⁻¹ (CODATA 2018's exact h, c and k); 0 at
-/// wavelengths that are not positive.
+/// `kelvin`, in W·sr⁻¹·m⁻²·nm⁻¹ (CODATA 2018's exact h, c and k:
+/// [`PlanckConstants::CODATA_2018`]); 0 at wavelengths that are not
+/// positive.
 ///
 /// ```
 /// // At 6000 K and 600 nm: 2.867639e13 W·sr⁻¹·m⁻³, 2.867639e4 per nm.
@@ -97,17 +147,12 @@ const WIEN: f64 = 2.897_771_955e-3;
 /// ```
 #[must_use]
 pub fn planck(lambda: f64, kelvin: f64) -> f64 {
-    planck_per_m(lambda, kelvin) * 1e-9
+    PlanckConstants::CODATA_2018.radiance(lambda, kelvin)
 }
 
 /// Planck's law per metre of wavelength, W·sr⁻¹·m⁻³.
 fn planck_per_m(lambda: f64, kelvin: f64) -> f64 {
-    if lambda <= 0.0 {
-        return 0.0;
-    }
-    let l = lambda * 1e-9;
-    let l5 = l * l * l * l * l;
-    2.0 * PLANCK * LIGHT * LIGHT / (l5 * ((PLANCK * LIGHT / (l * BOLTZMANN * kelvin)).exp_m1()))
+    PlanckConstants::CODATA_2018.per_m(lambda, kelvin)
 }
 
 impl Blackbody {

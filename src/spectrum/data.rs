@@ -62,7 +62,7 @@ pub mod lights {
     pub use super::generated::lights::*;
 
     use crate::error::Error;
-    use crate::spectrum::{Role, TabulatedSpectrum};
+    use crate::spectrum::{PlanckConstants, Role, TabulatedSpectrum};
 
     /// pbrt-v4's names for the CIE illuminants it ships, each with the
     /// built-in light it names: what a scene ported from pbrt-v4 types.
@@ -114,16 +114,16 @@ pub mod lights {
     /// between; 100 at 560 nm. It reproduces the CIE's D50, D55, D65 and
     /// D75 tables to their rounding (`tests/truth/named.rs`).
     pub fn daylight(kelvin: f64) -> Result<TabulatedSpectrum, Error> {
+        daylight_with(kelvin, PlanckConstants::CIE)
+    }
+
+    /// [`daylight`] on the temperature scale of `constants`' c₂: at
+    /// `kelvin · c₂/1.4380e-2` (with [`PlanckConstants::CIE`], `daylight`).
+    pub fn daylight_with(kelvin: f64, constants: PlanckConstants) -> Result<TabulatedSpectrum, Error> {
         if !(4000.0..=25000.0).contains(&kelvin) {
             return Err(Error::Daylight { kelvin });
         }
-        let t = kelvin * 1.4388 / 1.4380;
-        let x = if t <= 7000.0 {
-            -4.6070e9 / t.powi(3) + 2.9678e6 / t.powi(2) + 0.09911e3 / t + 0.244063
-        } else {
-            -2.0064e9 / t.powi(3) + 1.9018e6 / t.powi(2) + 0.24748e3 / t + 0.237040
-        };
-        let y = -3.000 * x * x + 2.870 * x - 0.275;
+        let [x, y] = daylight_xy(kelvin * constants.c2 / 1.4380e-2)?;
         let m = 0.0241 + 0.2562 * x - 0.7341 * y;
         let round = |v: f64| (v * 1000.0).round() / 1000.0;
         let (m1, m2) =
@@ -132,6 +132,29 @@ pub mod lights {
         let values =
             s0.values().iter().zip(s1.values()).zip(s2.values()).map(|((a, b), c)| a + m1 * b + m2 * c);
         TabulatedSpectrum::new(s0.lambda().to_vec(), values.collect(), Role::Light)
+    }
+
+    /// The chromaticity `[x, y]` of CIE daylight at the correlated colour
+    /// temperature `cct` K on the current scale (CIE 015:2018, eqs. 4.7–4.9:
+    /// the daylight locus), 4000–25000 K (to 25014 K, so that every nominal
+    /// temperature [`daylight`] takes has one).
+    ///
+    /// ```
+    /// // The locus near D65 (whose tabulated spectrum has xy 0.31272, 0.32903).
+    /// let [x, y] = speclab::data::lights::daylight_xy(6504.0)?;
+    /// assert!((x - 0.312_71).abs() < 1e-5 && (y - 0.329_12).abs() < 1e-5);
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    pub fn daylight_xy(cct: f64) -> Result<[f64; 2], Error> {
+        if !(4000.0..=25000.0 * 1.4388 / 1.4380).contains(&cct) {
+            return Err(Error::Daylight { kelvin: cct });
+        }
+        let x = if cct <= 7000.0 {
+            -4.6070e9 / cct.powi(3) + 2.9678e6 / cct.powi(2) + 0.09911e3 / cct + 0.244063
+        } else {
+            -2.0064e9 / cct.powi(3) + 1.9018e6 / cct.powi(2) + 0.24748e3 / cct + 0.237040
+        };
+        Ok([x, -3.000 * x * x + 2.870 * x - 0.275])
     }
 }
 
@@ -187,6 +210,12 @@ pub mod daylight {
 /// The CIE 1931 2° standard observer's matching functions x̄, ȳ, z̄.
 pub mod cie1931 {
     pub use super::generated::cie1931::{CIE_X as X_BAR, CIE_Y as Y_BAR, CIE_Z as Z_BAR};
+}
+
+/// The CIE's standard observers at 1 nm, 360–830 nm, as `[x̄, ȳ, z̄]` rows
+/// (`data/observers/`; read them through [`crate::spectrum::StandardObserver`]).
+pub mod observers {
+    pub use super::generated::observers::*;
 }
 
 pub(crate) use generated::XYZ_TO_SRGB;

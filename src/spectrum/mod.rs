@@ -55,10 +55,12 @@ pub(crate) mod piecewise;
 pub(crate) mod pointwise;
 mod product;
 pub(crate) mod quadrature;
+mod range;
 mod sampled;
 pub(crate) mod scaled;
 pub(crate) mod sigmoid;
 pub(crate) mod simd;
+mod standard_observer;
 mod tabulated;
 pub(crate) mod weights;
 
@@ -69,17 +71,19 @@ pub use speclab_tables::range::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH};
 #[doc(no_inline)]
 pub use speclab_tables::validate;
 
-pub use analytic::{Blackbody, Constant, FnSpectrum, planck};
+pub use analytic::{Blackbody, Constant, FnSpectrum, PlanckConstants, planck};
 pub use dense_table::DenseSpectrum;
 pub use float::Float;
 pub use interface::{Pieces, Samples, Spectrum};
 pub use mixture::Mixture;
-pub use observer::{Cie1931, DenseObserver, Observer};
+pub use observer::{AssignmentObserver, DenseObserver, Observer};
 pub use optics::{Cauchy, Conductor, NormalReflectance, Sellmeier};
 pub use product::{MAX_POWER, Product};
+pub use range::WavelengthRange;
 pub use sampled::{SampledSpectrum, Wavelengths};
 pub use scaled::Scaled;
 pub use sigmoid::{SigmoidPolynomial, sigmoid, sigmoid_f32};
+pub use standard_observer::{StandardObserver, Table as ObserverTable};
 #[doc(hidden)]
 pub use tabulated::Tables;
 pub use tabulated::TabulatedSpectrum;

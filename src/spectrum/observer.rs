@@ -99,7 +99,7 @@ const fn channels() -> [[f64x4; 4]; SEGMENTS] {
 }
 
 /// Colour matching functions x̄, ȳ, z̄ at K wavelengths at once: the exact
-/// interpolated CIE 1931 observer, [`Cie1931`], or a dense table
+/// interpolated CIE 1931 observer, [`AssignmentObserver`], or a dense table
 /// (`DenseObserver`). A hero sample takes its weights from one when it is
 /// drawn.
 pub trait Observer {
@@ -114,9 +114,9 @@ pub trait Observer {
 /// The CIE 1931 2° observer of Appendix 1, interpolated by the clamped
 /// cubic: the exact one.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Cie1931;
+pub struct AssignmentObserver;
 
-impl Observer for Cie1931 {
+impl Observer for AssignmentObserver {
     /// Evaluated in `f64` at each wavelength (one segment lookup for all
     /// three) and rounded to `T`: for four wavelengths or more, Horner's
     /// rule on `[x̄, ȳ, z̄, 1]` side by side in one `f64x4`, from
@@ -279,7 +279,7 @@ mod tests {
         for outside in [379.99, 780.01, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
             assert_eq!(xyz_bar_row(outside).map(f64::to_bits), none, "at {outside}");
             assert_eq!(lone_row(outside).map(f64::to_bits), none, "at {outside}");
-            let four = Cie1931.xyz_bar_at(&[outside; 4]).map(|r| r.map(f64::to_bits));
+            let four = AssignmentObserver.xyz_bar_at(&[outside; 4]).map(|r| r.map(f64::to_bits));
             assert_eq!(four, [none; 4], "at {outside}");
         }
     }

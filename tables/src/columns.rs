@@ -53,7 +53,7 @@ pub fn parse_columns(text: &str, origin: &str) -> Result<Samples, ParseError> {
 /// The fields of a line with their 1-based character columns. Commas and
 /// semicolons separate fields (an empty field between two is kept, so a
 /// missing value is reported); otherwise tabs and spaces do.
-fn fields(line: &str) -> Vec<(usize, &str)> {
+pub(crate) fn fields(line: &str) -> Vec<(usize, &str)> {
     let line = line.trim_end_matches('\r');
     if line.trim().is_empty() {
         return Vec::new();
@@ -79,7 +79,7 @@ fn fields(line: &str) -> Vec<(usize, &str)> {
 
 /// True for tokens that are meant as numbers even if malformed (`1.2.3`,
 /// `nan`, `inf`, empty): a row starting so is a row, not a header.
-fn looks_numeric(field: &str) -> bool {
+pub(crate) fn looks_numeric(field: &str) -> bool {
     let lower = field.to_ascii_lowercase();
     field.is_empty()
         || field.starts_with(|c: char| c.is_ascii_digit() || c == '.' || c == '-' || c == '+')

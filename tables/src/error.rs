@@ -85,6 +85,18 @@ pub enum ParseErrorKind {
         /// Entries expected.
         expected: usize,
     },
+    /// A wavelength off the table's uniform step.
+    Step {
+        /// The wavelength found, nm.
+        found: f64,
+        /// The wavelength the step asks for, nm.
+        expected: f64,
+    },
+    /// A negative value where only non-negative ones belong.
+    Negative {
+        /// The token as written.
+        text: String,
+    },
     /// Well-formed text whose samples are not a valid spectrum (see
     /// [`crate::validate`]).
     Invalid(Invalid),
@@ -108,6 +120,10 @@ impl fmt::Display for ParseErrorKind {
             ParseErrorKind::Count { found, expected } => {
                 write!(f, "expected {expected} entries, found {found}")
             }
+            ParseErrorKind::Step { found, expected } => {
+                write!(f, "expected the wavelength {expected} nm (a uniform step), found {found}")
+            }
+            ParseErrorKind::Negative { text } => write!(f, "expected a non-negative value, found {text}"),
             ParseErrorKind::Invalid(problem) => problem.fmt(f),
         }
     }

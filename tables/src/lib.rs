@@ -13,6 +13,9 @@
 //! - [`interp`]: the piecewise polynomials through the samples (linear, or
 //!   the cubic through the four nearest samples), their clamp crossings and
 //!   exact integrals.
+//! - [`observer`]: three responses per wavelength at a uniform step (the
+//!   CIE's colour-matching functions, or a camera's), from `nm,x,y,z` rows
+//!   to a static table.
 //! - [`codegen`]: [`Codegen`], spectrum files → Rust source declaring
 //!   `static` `speclab::TabulatedSpectrum`s.
 //! - [`error`]: every error names its place (`file:line:column: expected …,
@@ -51,6 +54,7 @@ pub mod columns;
 pub mod error;
 pub mod interp;
 pub mod json;
+pub mod observer;
 pub mod range;
 pub mod read;
 pub mod rgb_file;

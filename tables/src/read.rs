@@ -66,6 +66,28 @@ impl Format {
     }
 }
 
+/// What to do with samples that do not reach a range: the caller names it,
+/// nothing is filled in silently.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Extend {
+    /// Refuse samples that do not cover 380–730 nm (the default): the
+    /// error names the range found and the range required.
+    #[default]
+    Refuse,
+    /// Zero outside the samples (every spectrum is zero outside its table).
+    Zero,
+    /// The end values held out to 360 and 830 nm, as pbrt-v4 pads: samples
+    /// added at the end's step (at least [`HOLD_STEP`] nm), the last at
+    /// the range's end.
+    Hold,
+}
+
+/// The smallest step of the samples [`Extend::Hold`] adds, nm.
+pub const HOLD_STEP: f64 = 5.0;
+
+/// How far [`Extend::Hold`] holds the end values, nm (360–830).
+pub const HOLD_RANGE: [f64; 2] = [360.0, 830.0];
+
 /// Validated samples from `text` in `format` (detected if `None`), covering
 /// 380–730 nm (and, for a light, with power there); every error names
 /// `origin`, the line and the column.
@@ -76,9 +98,25 @@ pub fn samples(
     interpolation: Interpolation,
     format: Option<Format>,
 ) -> Result<Samples, ParseError> {
+    samples_with(text, origin, role, interpolation, format, Extend::Refuse)
+}
+
+/// [`samples`] with samples short of 380–730 nm treated as `extend` says.
+pub fn samples_with(
+    text: &str,
+    origin: &str,
+    role: Role,
+    interpolation: Interpolation,
+    format: Option<Format>,
+    extend: Extend,
+) -> Result<Samples, ParseError> {
     let parsed = format.unwrap_or_else(|| Format::detect(text)).parse(text, origin)?;
-    let samples = locate(parsed, origin, role, interpolation)?;
-    covers_range(&samples, origin)?;
+    let mut samples = locate(parsed, origin, role, interpolation)?;
+    match extend {
+        Extend::Refuse => covers_range(&samples, origin)?,
+        Extend::Zero => {}
+        Extend::Hold => samples = hold(samples),
+    }
     if role == Role::Light {
         has_power(&samples, origin, interpolation)?;
     }
@@ -104,6 +142,33 @@ fn locate(
             Err(ParseError { origin: origin.to_string(), position, kind: ParseErrorKind::Invalid(e.problem) })
         }
     }
+}
+
+/// The samples with their end values held out to [`HOLD_RANGE`].
+pub fn hold(s: Samples) -> Samples {
+    let n = s.lambda.len();
+    if n < 2 {
+        return s;
+    }
+    let mut out = Samples::default();
+    let (first, last) = (s.lambda[0], s.lambda[n - 1]);
+    // Samples from `from` (excluded) to `to` (included) going `direction`;
+    // none where the samples already reach `to`.
+    let pad = |from: f64, to: f64, direction: f64, step: f64| {
+        let count = ((to - from) * direction / step).ceil().max(0.0) as usize;
+        (1..count).map(move |i| from + direction * step * i as f64).chain((count > 0).then_some(to))
+    };
+    let low: Vec<f64> = pad(first, HOLD_RANGE[0], -1.0, (s.lambda[1] - first).max(HOLD_STEP)).collect();
+    for &l in low.iter().rev() {
+        out.push(l, s.values[0], s.positions[0], s.value_positions[0]);
+    }
+    for i in 0..n {
+        out.push(s.lambda[i], s.values[i], s.positions[i], s.value_positions[i]);
+    }
+    for l in pad(last, HOLD_RANGE[1], 1.0, (last - s.lambda[n - 2]).max(HOLD_STEP)) {
+        out.push(l, s.values[n - 1], s.positions[n - 1], s.value_positions[n - 1]);
+    }
+    out
 }
 
 /// Errors unless the samples span 380–730 nm.
@@ -151,4 +216,33 @@ pub fn file(path: &Path) -> Result<String, ReadError> {
     let io = |source| ReadError::Io { path: path.to_path_buf(), source };
     let file = std::fs::File::open(path).map_err(io)?;
     text(file, &path.display().to_string(), MAX_BYTES)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn load(text: &str, extend: Extend) -> Result<Samples, ParseError> {
+        samples_with(text, "t.csv", Role::Reflectance, Interpolation::Linear, None, extend)
+    }
+
+    #[test]
+    fn a_partial_spectrum_needs_a_policy() {
+        let text = "400,0.2\n410,0.3\n700,0.6\n";
+        let refused = load(text, Extend::Refuse).unwrap_err();
+        assert_eq!(refused.to_string(), "t.csv:1:1: expected samples covering 380-730 nm, found 400-700 nm");
+        assert_eq!(load(text, Extend::Zero).unwrap().lambda, [400.0, 410.0, 700.0]);
+        let held = load(text, Extend::Hold).unwrap();
+        let low = [360.0, 370.0, 380.0, 390.0, 400.0, 410.0];
+        assert_eq!(held.lambda[..6], low, "the first step (10 nm) down to 360 nm");
+        assert_eq!(held.lambda[6..], [700.0, 830.0], "the last step (290 nm) reaches 830 nm at once");
+        assert_eq!(held.values, [0.2, 0.2, 0.2, 0.2, 0.2, 0.3, 0.6, 0.6]);
+        assert_eq!(held.positions[0], held.positions[4], "a held sample is placed at the sample it repeats");
+        let fine = load("379,1\n380,1\n731,0.5\n", Extend::Hold).unwrap();
+        assert_eq!(fine.lambda[..4], [360.0, 364.0, 369.0, 374.0], "steps of at least 5 nm, 360 last");
+        assert_eq!(fine.lambda[4..6], [379.0, 380.0]);
+        assert_eq!(fine.lambda[fine.lambda.len() - 2..], [731.0, 830.0]);
+        let whole = load("350,0.1\n900,0.2\n", Extend::Hold).unwrap();
+        assert_eq!(whole.lambda, [350.0, 900.0], "nothing to hold");
+    }
 }

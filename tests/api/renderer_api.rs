@@ -146,11 +146,11 @@ fn terminate_secondary_keeps_the_hero_alone() {
 /// `terminate_secondary` still works.
 #[test]
 fn an_observer_of_ones_own_keeps_the_pdf() {
-    use speclab::spectrum::{Cie1931, Float, Observer, Wavelengths};
+    use speclab::spectrum::{AssignmentObserver, Float, Observer, Wavelengths};
     struct ZeroFourth;
     impl Observer for ZeroFourth {
         fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
-            Cie1931.xyz_bar_at(at).map(|[x, y, z, _]| [x, y, z, T::ZERO])
+            AssignmentObserver.xyz_bar_at(at).map(|[x, y, z, _]| [x, y, z, T::ZERO])
         }
     }
     let mut own = HeroSample::<4>::with_observer(0.1, &ZeroFourth);

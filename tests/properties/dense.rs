@@ -7,7 +7,7 @@
 use speclab::data::{Light, Patch, cie1931, lights, patches};
 use speclab::sampling::reference;
 use speclab::spectrum::observer::xyz_bar;
-use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Observer};
+use speclab::spectrum::{AssignmentObserver, DenseObserver, DenseSpectrum, Observer};
 use speclab::{Spectrum, Xyz};
 
 /// The largest |dense − source| every 0.01 nm over 380–730 nm.
@@ -106,7 +106,7 @@ fn the_dense_observer_is_dense_tables() {
         }
     }
     let whole = [455.0, 555.0];
-    assert_eq!(d64.xyz_bar_at(&whole), Cie1931.xyz_bar_at(&whole));
+    assert_eq!(d64.xyz_bar_at(&whole), AssignmentObserver.xyz_bar_at(&whole));
 }
 
 /// Steps integrate exactly: the reference of two dense tables equals a

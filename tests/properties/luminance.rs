@@ -7,7 +7,7 @@ use speclab::data::lights;
 use speclab::sampling::regular::Bucketing;
 use speclab::sampling::{reference, rule::Rule};
 use speclab::spectrum::observer::{CMFS, Y_BAR_INTEGRAL};
-use speclab::spectrum::{Cie1931, Constant, DenseObserver, DenseSpectrum, Float, Observer};
+use speclab::spectrum::{AssignmentObserver, Constant, DenseObserver, DenseSpectrum, Float, Observer};
 use speclab::{BoxAverage, Center, FixedWavelengths, HeroSample, SampledSpectrum};
 
 /// `Σⱼ w_Yⱼ` of fixed wavelengths.
@@ -32,7 +32,7 @@ fn drawn_mean(n: u32, observer: &impl Observer) -> f64 {
 /// 1 nm grid), which lies 6e-8 from `∫ȳ`.
 #[test]
 fn drawn_weights_average_to_the_integral_of_their_observer() {
-    let exact = drawn_mean(16_384, &Cie1931);
+    let exact = drawn_mean(16_384, &AssignmentObserver);
     assert!((exact / Y_BAR_INTEGRAL - 1.0).abs() < 1e-8, "{exact} vs {Y_BAR_INTEGRAL}");
     let y = DenseSpectrum::new(CMFS[1]);
     let v = y.values::<f64>();

@@ -7,7 +7,7 @@ use rand::{RngExt, SeedableRng};
 use speclab::data::Light;
 use speclab::io::Load;
 use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
-use speclab::spectrum::Cie1931;
+use speclab::spectrum::AssignmentObserver;
 use speclab::{Error, HeroSample, Role, TabulatedSpectrum};
 
 /// Every density, named, for the built-in lights.
@@ -178,10 +178,10 @@ fn spread_matches_exact_variance() {
                     .map(|_| {
                         let u: f64 = rng.random();
                         if k == 1 {
-                            let h = HeroSample::<1>::from_pdf_with(u, p, &Cie1931);
+                            let h = HeroSample::<1>::from_pdf_with(u, p, &AssignmentObserver);
                             h.to_xyz(l.sample(&h) * s.sample(&h))
                         } else {
-                            let h = HeroSample::<4>::from_pdf_with(u, p, &Cie1931);
+                            let h = HeroSample::<4>::from_pdf_with(u, p, &AssignmentObserver);
                             h.to_xyz(l.sample(&h) * s.sample(&h))
                         }
                     })

@@ -85,11 +85,21 @@ fn the_assignment_lights_are_the_cie_tables_rescaled() {
     }
 }
 
-/// Each glass's n_d (587.5618 nm) and Abbe number to the catalogue's digits.
+/// Each glass's n_d (587.5618 nm) and Abbe number to the catalogue's
+/// digits, or (fused silica, diamond) its index at spectral lines to the
+/// published digits; every glass has rows.
 #[test]
 fn glasses_have_their_catalogue_index_and_abbe_number() {
-    let rows = rows("glasses.csv");
-    assert_eq!(rows.len(), glasses::ALL.len());
+    let (rows, lines) = (rows("glasses.csv"), rows("glass-lines.csv"));
+    for (name, _) in glasses::ALL {
+        assert!(rows.iter().chain(&lines).any(|r| r[0] == *name), "{name} has published figures");
+    }
+    for row in lines {
+        let (_, glass) = glasses::ALL.iter().find(|(n, _)| *n == row[0]).expect("a glass of the list");
+        let digits = row[2].split('.').nth(1).map_or(0, str::len);
+        let n = glass.eval(row[1].parse().expect("nm"));
+        assert_eq!(rounded(n, digits), row[2], "{} at {} nm: {n}", row[0], row[1]);
+    }
     for row in rows {
         let (_, glass) = glasses::ALL.iter().find(|(n, _)| *n == row[0]).expect("a glass of the list");
         let (d, f, c) = (glass.eval(587.5618), glass.eval(486.1327), glass.eval(656.2725));

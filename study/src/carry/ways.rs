@@ -24,7 +24,7 @@ pub struct Hero<L, S, O, P, T = f64> {
     /// The surfaces' albedos, numbered in order.
     pub surfaces: Vec<S>,
     /// The observer the weights come from (`DenseObserver` for the fast
-    /// path, `Cie1931` for the exact one).
+    /// path, `AssignmentObserver` for the exact one).
     pub observer: O,
     /// The density the wavelengths are drawn from.
     pub pdf: P,

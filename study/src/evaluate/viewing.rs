@@ -29,7 +29,7 @@
 
 use crate::StudyError;
 use speclab::color::Xyz;
-use speclab::color::adaptation::bradford;
+use speclab::color::adaptation::Cat;
 use speclab::named_choices;
 use speclab::sampling::reference;
 use speclab::spectrum::data::lights;
@@ -78,7 +78,7 @@ pub fn target_white(light: &TabulatedSpectrum) -> Xyz {
 /// `xyz` under `light`, white-balanced to D65 at the same luminance.
 #[must_use]
 pub fn white_balance(xyz: Xyz, light: &TabulatedSpectrum) -> Xyz {
-    bradford(xyz, reference::white(light), target_white(light))
+    Cat::Bradford.adapt(xyz, reference::white(light), target_white(light))
 }
 
 /// How colours are viewed: the light's normalisation, and whether colours

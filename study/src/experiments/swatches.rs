@@ -51,7 +51,7 @@ use crate::evaluate::viewing;
 use crate::sampling::choice::{PdfKind, Sampling};
 use crate::sampling::strata::Strata;
 use speclab::color::Xyz;
-use speclab::color::adaptation::bradford;
+use speclab::color::adaptation::Cat;
 use speclab::sampling::buckets::BucketRule;
 use speclab::sampling::reference;
 use speclab::spectrum::TabulatedSpectrum;
@@ -199,7 +199,7 @@ impl Look {
     }
 
     fn pixel(&self, xyz: Xyz) -> Srgb8 {
-        let xyz = self.balance.map_or(xyz, |(from, to)| bradford(xyz, from, to));
+        let xyz = self.balance.map_or(xyz, |(from, to)| Cat::Bradford.adapt(xyz, from, to));
         self.display.pixel(xyz.to_linear_srgb())
     }
 }

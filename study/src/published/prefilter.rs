@@ -27,7 +27,7 @@
 use std::fmt;
 
 use speclab::color::Xyz;
-use speclab::color::adaptation::BRADFORD;
+use speclab::color::adaptation::Cat;
 use speclab::color::matrix::{Matrix, inverse, mul};
 use speclab::color::srgb::XYZ_TO_SRGB;
 use speclab::error::Error;
@@ -56,7 +56,7 @@ impl Space {
         match self {
             Space::Xyz => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
             Space::Srgb => XYZ_TO_SRGB,
-            Space::Sharp => BRADFORD,
+            Space::Sharp => Cat::Bradford.cones(),
         }
     }
 }

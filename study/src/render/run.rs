@@ -14,7 +14,9 @@ use speclab::sampling::binned::BinnedPdf;
 use speclab::sampling::pdf::WavelengthPdf;
 use speclab::sampling::rule::Rule;
 use speclab::sampling::{AtWidth, with_lanes};
-use speclab::spectrum::{Cie1931, DenseObserver, DenseSpectrum, Float, Mixture, Observer, Spectrum};
+use speclab::spectrum::{
+    AssignmentObserver, DenseObserver, DenseSpectrum, Float, Mixture, Observer, Spectrum,
+};
 use speclab::{TabulatedSpectrum, Xyz};
 
 use crate::evaluate::perceptual;
@@ -84,8 +86,12 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
                 });
             }
             Ok(match (o.dense, o.single) {
-                (false, false) => with.go(&hero::<_, _, f64>(setup, lights, patches.clone(), Cie1931, pdf)),
-                (false, true) => with.go(&hero::<_, _, f32>(setup, lights, patches.clone(), Cie1931, pdf)),
+                (false, false) => {
+                    with.go(&hero::<_, _, f64>(setup, lights, patches.clone(), AssignmentObserver, pdf))
+                }
+                (false, true) => {
+                    with.go(&hero::<_, _, f32>(setup, lights, patches.clone(), AssignmentObserver, pdf))
+                }
                 (true, false) => {
                     let dense = |s: &TabulatedSpectrum| DenseSpectrum::new(s);
                     let (l, p) = (lights.iter().map(dense).collect(), patches.iter().map(dense).collect());

@@ -18,7 +18,7 @@ use crate::sampling::choice::{PdfKind, Sampling};
 use crate::sampling::strata::Strata;
 use speclab::Xyz;
 use speclab::data::Light;
-use speclab::spectrum::Cie1931;
+use speclab::spectrum::AssignmentObserver;
 
 use crate::evaluate::Named;
 use crate::render::run::{WithCarry, delta_e, hero, wavelength_pdf, with_carry};
@@ -163,8 +163,13 @@ pub fn survey(
         let hero_o = Options { sampling: Sampling { pdf, strata: Strata::Jittered }, ..o.clone() };
         for spp in HERO_SPP {
             let density = wavelength_pdf(&hero_o, setup)?;
-            let carry =
-                hero::<_, _, f64>(setup, setup.light_spectra(), setup.patches.clone(), Cie1931, density);
+            let carry = hero::<_, _, f64>(
+                setup,
+                setup.light_spectra(),
+                setup.patches.clone(),
+                AssignmentObserver,
+                density,
+            );
             push(format!("hero {pdf}/jitter"), spp, measure(spp).go(&carry));
         }
     }

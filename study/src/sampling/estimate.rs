@@ -3,7 +3,7 @@
 //! spread by a [`Strata`], at a hero width fixed at compile time
 //! ([`estimate_with`]) or chosen at run time ([`estimate_width`]). Each
 //! sample is the core's [`HeroSample`] with the exact observer
-//! ([`Cie1931`]), so the means are unbiased for the exact integrals they
+//! ([`AssignmentObserver`]), so the means are unbiased for the exact integrals they
 //! are judged by.
 //!
 //! ```
@@ -20,7 +20,7 @@ use std::num::NonZeroUsize;
 use rand::Rng;
 use speclab::sampling::HeroSample;
 use speclab::sampling::pdf::{Uniform, WavelengthPdf};
-use speclab::spectrum::observer::{self, Cie1931};
+use speclab::spectrum::observer::{self, AssignmentObserver};
 use speclab::{Error, Spectrum, Xyz};
 
 use crate::sampling::strata::Strata;
@@ -61,7 +61,7 @@ pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>
     let sum: Xyz = strata
         .points(n.get(), K, rng)
         .map(|u| {
-            let h = HeroSample::<K>::from_pdf_with(u, pdf, &Cie1931);
+            let h = HeroSample::<K>::from_pdf_with(u, pdf, &AssignmentObserver);
             h.to_xyz(light.sample(&h) * surface.sample(&h))
         })
         .sum();

@@ -8,7 +8,7 @@ use speclab::data::{lights, patches};
 use speclab::sampling::pdf::{LightPdf, Uniform};
 use speclab::sampling::{HeroSample, reference, rule::Rule};
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
-use speclab::spectrum::{Cie1931, DenseObserver, SampledSpectrum};
+use speclab::spectrum::{AssignmentObserver, DenseObserver, SampledSpectrum};
 use speclab::{TabulatedSpectrum, Xyz};
 use speclab_study::carry::{Carry, Fitted, Hero, Rgb};
 
@@ -23,10 +23,10 @@ fn close(a: Xyz, b: Xyz, tolerance: f64) -> bool {
 fn hero_is_the_per_sample_calls() {
     let f11 = LightPdf::light(&lights::F11).expect("a bright light");
     let lights = vec![&lights::F11, &lights::A];
-    let hero = Hero::new(lights, vec![&patches::G4, &patches::A1], Cie1931, &f11);
+    let hero = Hero::new(lights, vec![&patches::G4, &patches::A1], AssignmentObserver, &f11);
     for u in [0.0, 0.3, 0.77] {
         let path = hero.path(u);
-        assert_eq!(path, HeroSample::<4>::from_pdf_with(u, &f11, &Cie1931));
+        assert_eq!(path, HeroSample::<4>::from_pdf_with(u, &f11, &AssignmentObserver));
         assert_eq!(hero.one(), SampledSpectrum::splat(1.0));
         let beta = hero.albedo(&path, 1) * hero.scale(hero.one(), 0.5);
         assert_eq!(beta, path.sample(&patches::A1) * 0.5);
@@ -49,7 +49,7 @@ fn hero_is_the_per_sample_calls() {
 /// paths within 1e-3).
 #[test]
 fn a_white_path_has_luminance_one_on_average() {
-    let hero = Hero::new(vec![&lights::D65], vec![&patches::A1], Cie1931, Uniform);
+    let hero = Hero::new(vec![&lights::D65], vec![&patches::A1], AssignmentObserver, Uniform);
     let n = 4096;
     let mean =
         (0..n).map(|i| hero.luminance(&hero.path((i as f64 + 0.5) / n as f64), hero.one())).sum::<f64>()
