@@ -107,7 +107,7 @@ pub enum Error {
         found: crate::spectrum::Role,
     },
     /// Dispersion coefficients that do not give a real, finite, positive
-    /// refractive index over 380–730 nm.
+    /// refractive index over 360–830 nm.
     Dispersion,
     /// A correlated colour temperature outside the CIE daylight formula's
     /// range (4000–25000 K).

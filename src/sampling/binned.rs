@@ -20,7 +20,7 @@
 //! use speclab::sampling::binned::BinnedPdf;
 //! use speclab::sampling::pdf::{LightPdf, Visible, WavelengthPdf};
 //! let f11 = BinnedPdf::new(&LightPdf::light(&lights::F11)?, 256)?;
-//! let visible = BinnedPdf::new(&Visible, 256)?;
+//! let visible = BinnedPdf::new(&Visible::ASSIGNMENT, 256)?;
 //! let h = HeroSample::<4>::from_pdf(0.3, &f11);
 //! assert!(h.pdf().iter().all(|&p| p > 0.0));
 //! // 545 nm is on one of F11's lines, 500 nm between them.

@@ -17,10 +17,13 @@ impl WavelengthPdf for Stuck {
 
 #[test]
 fn bin_counts_and_degenerate_densities_are_errors() {
-    assert!(matches!(BinnedPdf::new(&Uniform, 0), Err(Error::Count { found: 0, max: MAX_BINS, .. })));
-    assert!(matches!(BinnedPdf::new(&Uniform, MAX_BINS + 1), Err(Error::Count { .. })));
-    assert_eq!(BinnedPdf::new(&Uniform, MAX_BINS).map(|p| p.len()).ok(), Some(MAX_BINS));
-    let one = BinnedPdf::new(&Uniform, 1).unwrap();
+    assert!(matches!(
+        BinnedPdf::new(&Uniform::ASSIGNMENT, 0),
+        Err(Error::Count { found: 0, max: MAX_BINS, .. })
+    ));
+    assert!(matches!(BinnedPdf::new(&Uniform::ASSIGNMENT, MAX_BINS + 1), Err(Error::Count { .. })));
+    assert_eq!(BinnedPdf::new(&Uniform::ASSIGNMENT, MAX_BINS).map(|p| p.len()).ok(), Some(MAX_BINS));
+    let one = BinnedPdf::new(&Uniform::ASSIGNMENT, 1).unwrap();
     assert!(!one.is_empty() && (one.pdf(400.0) * LAMBDA_WIDTH - 1.0).abs() < 1e-12);
     assert!(matches!(BinnedPdf::new(&Stuck(500.0), 4), Err(Error::NoMass)));
     assert!(matches!(BinnedPdf::new(&Stuck(f64::NAN), 1), Err(Error::NoMass)));
@@ -48,7 +51,7 @@ fn knots_are_the_sources_quantiles() {
 /// Uniform cut into equal bins stays uniform.
 #[test]
 fn uniform_stays_uniform() {
-    let binned = BinnedPdf::new(&Uniform, 7).unwrap();
+    let binned = BinnedPdf::new(&Uniform::ASSIGNMENT, 7).unwrap();
     for i in 0..100 {
         let u = (i as f64 + 0.5) / 100.0;
         let (lambda, inv) = binned.sample_with_inv_pdf(u);
@@ -107,9 +110,9 @@ fn estimates_from_the_histogram_are_unbiased() {
 
 #[test]
 fn visible_histogram_tracks_visible() {
-    let binned = BinnedPdf::new(&Visible, 256).unwrap();
+    let binned = BinnedPdf::new(&Visible::ASSIGNMENT, 256).unwrap();
     for lambda in [400.0, 538.0, 700.0] {
-        let (a, b) = (binned.pdf(lambda), Visible.pdf(lambda));
+        let (a, b) = (binned.pdf(lambda), Visible::ASSIGNMENT.pdf(lambda));
         assert!((a - b).abs() < 0.02 * b, "{lambda}: {a} against {b}");
     }
 }

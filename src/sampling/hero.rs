@@ -44,6 +44,7 @@ use crate::error::Error;
 use crate::sampling::pdf::WavelengthPdf;
 use crate::sampling::wavelengths::{Weighted, weighted_wavelengths};
 use crate::spectrum::DenseObserver;
+use crate::spectrum::lookup::ASSIGNMENT_OFFSET;
 use crate::spectrum::observer::{AssignmentObserver, Observer};
 use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum};
 
@@ -94,7 +95,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     #[inline(always)]
     #[must_use]
     pub fn new(u: T) -> Self {
-        Self::with_observer(u, &DenseObserver)
+        Self::with_observer(u, &DenseObserver::ASSIGNMENT)
     }
 
     /// [`HeroSample::new`] weighted by the exact observer ([`AssignmentObserver`],
@@ -123,7 +124,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
         };
         let p: [u32; K] = std::array::from_fn(position);
         let lambda = std::array::from_fn(|j| T::from_f64(LAMBDA_MIN + f64::from(p[j]) * (1.0 / 65536.0)));
-        let nearest = std::array::from_fn(|j| ((p[j] + 0x8000) >> 16) as u16);
+        let nearest = std::array::from_fn(|j| ((p[j] + 0x8000) >> 16) as u16 + ASSIGNMENT_OFFSET);
         let h = HeroSample(Weighted { lambda, nearest, rows: [[T::ZERO; 4]; K] });
         Self::weighted(h, [T::from_f64(LAMBDA_WIDTH); K], observer)
     }
@@ -137,7 +138,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     #[inline(always)]
     #[must_use]
     pub fn from_pdf<P: WavelengthPdf + ?Sized>(u: T, pdf: &P) -> Self {
-        Self::from_pdf_with(u, pdf, &DenseObserver)
+        Self::from_pdf_with(u, pdf, &DenseObserver::ASSIGNMENT)
     }
 
     /// [`HeroSample::from_pdf`] with the weights of `observer` ([`AssignmentObserver`]
@@ -165,7 +166,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     /// [`Error::SampleWavelength`]); a pdf of 0 marks a wavelength that
     /// contributes nothing.
     pub fn from_wavelengths(lambda: [T; K], pdf: [T; K]) -> Result<Self, Error> {
-        Self::from_wavelengths_with(lambda, pdf, &DenseObserver)
+        Self::from_wavelengths_with(lambda, pdf, &DenseObserver::ASSIGNMENT)
     }
 
     /// [`HeroSample::from_wavelengths`] with the weights of `observer`.

@@ -38,7 +38,7 @@
 //! use speclab::{data::{lights, patches}, HeroSample, Xyz};
 //! use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 //! let f11 = LightPdf::light(&lights::F11)?;
-//! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform, &Visible, &f11];
+//! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform::ASSIGNMENT, &Visible::VISIBLE, &f11];
 //! let n = 64;
 //! // The renderer's own numbers, stratified over [0, 1/4): the hero rotations fill the rest.
 //! let own = |i: usize| (i as f64 + 0.5) / (4 * n) as f64;
@@ -66,8 +66,10 @@
 //! assert!((buckets.y - exact.y).abs() < 0.01 * exact.y && one.y > 0.0);
 //! ```
 
+mod analytic_pdf;
 pub mod binned;
 pub mod buckets;
+mod density;
 pub mod fitted;
 pub mod hero;
 mod light_pdf;

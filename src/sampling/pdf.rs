@@ -3,12 +3,16 @@
 //!
 //! A [`WavelengthPdf`] maps a uniform number `u ∈ [0, 1)` to a wavelength
 //! by inverting its CDF (`sample`) and gives the density at any wavelength
-//! (`pdf`, 1/nm). All are exact, over 380–730 nm, and allocate nothing per
-//! sample. A renderer's own distribution implements the trait.
+//! (`pdf`, 1/nm). All are exact and allocate nothing per sample. A
+//! renderer's own distribution implements the trait.
 //!
-//! - [`Uniform`]: `1/W`, the assignment's random sampling.
+//! - [`Uniform`]: `1/W` over a range: the assignment's random sampling
+//!   (`Uniform::ASSIGNMENT`, 380–730 nm), or a renderer's
+//!   (`Uniform::VISIBLE`, 360–830 nm).
 //! - [`Visible`]: pbrt-v4's `SampleVisibleWavelengths` (Radziszewski et al.
-//!   2009), `p ∝ 1/cosh²(0.0072·(λ − 538))`, renormalised to 380–730 nm.
+//!   2009), `p ∝ 1/cosh²(0.0072·(λ − 538))`, over pbrt-v4's 360–830 nm
+//!   (`Visible::VISIBLE`) or renormalised to 380–730 nm (`ASSIGNMENT`).
+//! - The tabulated ones below are over 380–730 nm.
 //! - [`LightPdf::light`]: `p ∝ L(λ)·(x̄ + ȳ + z̄)(λ)`, following a spiky
 //!   light's lines.
 //! - [`LightPdf::balanced`]: `p ∝ L(λ)·Σ꜀ c̄꜀(λ)/white꜀`, giving each
@@ -32,11 +36,11 @@
 //! let lambda = f11.sample(0.5);
 //! assert!(f11.pdf(lambda) > 0.0);
 //! assert!((f11.cdf(lambda).unwrap() - 0.5).abs() < 1e-12);
-//! assert!(Visible.pdf(555.0) > Visible.pdf(400.0));
+//! assert!(Visible::ASSIGNMENT.pdf(555.0) > Visible::ASSIGNMENT.pdf(400.0));
 //! // A scene with two lights, the second at half strength:
 //! let scene = LightPdf::light(&Mixture::new().with(1.0, &lights::F11)?.with(0.5, &lights::D65)?)?;
 //! // Chosen at run time, without a double reference:
-//! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform, &Visible, &scene];
+//! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform::ASSIGNMENT, &Visible::VISIBLE, &scene];
 //! for pdf in pdfs {
 //!     let h = HeroSample::<4>::from_pdf(0.3, pdf);
 //!     assert!(h.pdf().iter().all(|&p| p > 0.0));
@@ -45,165 +49,12 @@
 //! ```
 
 use crate::error::Error;
+pub use crate::sampling::analytic_pdf::{Uniform, Visible};
+pub use crate::sampling::density::WavelengthPdf;
+use crate::sampling::density::reciprocal;
 use crate::sampling::light_pdf::PiecewisePdf;
 use crate::sampling::reference;
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
-
-/// A probability density over wavelengths that can be sampled by inverting
-/// its cumulative distribution.
-pub trait WavelengthPdf {
-    /// The wavelength (nm) whose CDF is `u`, for `u` in `[0, 1)`; values
-    /// outside are clamped into it.
-    fn sample(&self, u: f64) -> f64;
-    /// The density at `lambda`, 1/nm; zero outside the support.
-    fn pdf(&self, lambda: f64) -> f64;
-
-    /// The cumulative distribution at `lambda`, `∫ pdf` up to it, in
-    /// `[0, 1]` (0 for NaN), if the distribution knows it: renderers never
-    /// ask; exact variances (`study::variance`) do. `None` by default.
-    fn cdf(&self, _lambda: f64) -> Option<f64> {
-        None
-    }
-
-    /// `1/pdf(λ)`, nm, what an estimate multiplies by; 0 where the density
-    /// is 0 (or so small that its reciprocal overflows).
-    fn inv_pdf(&self, lambda: f64) -> f64 {
-        reciprocal(self.pdf(lambda))
-    }
-
-    /// `sample(u)` and its `inv_pdf`, together (a tabulated pdf finds the
-    /// density where it found the wavelength).
-    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
-        let lambda = self.sample(u);
-        (lambda, self.inv_pdf(lambda))
-    }
-}
-
-/// A reference or a box to a density is the density (a renderer holds
-/// mixed densities as `&dyn WavelengthPdf` or `Box<dyn WavelengthPdf>`).
-macro_rules! forward_pdf {
-    ($($pointer:ty),*) => {$(
-        impl<P: WavelengthPdf + ?Sized> WavelengthPdf for $pointer {
-            #[inline]
-            fn sample(&self, u: f64) -> f64 {
-                (**self).sample(u)
-            }
-            #[inline]
-            fn pdf(&self, lambda: f64) -> f64 {
-                (**self).pdf(lambda)
-            }
-            fn cdf(&self, lambda: f64) -> Option<f64> {
-                (**self).cdf(lambda)
-            }
-            #[inline]
-            fn inv_pdf(&self, lambda: f64) -> f64 {
-                (**self).inv_pdf(lambda)
-            }
-            #[inline]
-            fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
-                (**self).sample_with_inv_pdf(u)
-            }
-        }
-    )*};
-}
-
-forward_pdf!(&P, Box<P>);
-
-/// `1/p`, or 0 where `p` is 0 or its reciprocal overflows.
-#[inline]
-fn reciprocal(p: f64) -> f64 {
-    let w = 1.0 / p;
-    if p > 0.0 && w.is_finite() { w } else { 0.0 }
-}
-
-/// Clamps `u` into `[0, 1)`; NaN becomes 0.
-fn unit(u: f64) -> f64 {
-    if u > 0.0 { u.min(1.0 - f64::EPSILON / 2.0) } else { 0.0 }
-}
-
-/// The uniform density `1/W` over 380–730 nm.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Uniform;
-
-impl WavelengthPdf for Uniform {
-    #[inline]
-    fn sample(&self, u: f64) -> f64 {
-        LAMBDA_MIN + LAMBDA_WIDTH * unit(u)
-    }
-
-    #[inline]
-    fn pdf(&self, lambda: f64) -> f64 {
-        if (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) { 1.0 / LAMBDA_WIDTH } else { 0.0 }
-    }
-
-    /// Exactly `W` inside the range.
-    #[inline]
-    fn inv_pdf(&self, lambda: f64) -> f64 {
-        if (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) { LAMBDA_WIDTH } else { 0.0 }
-    }
-
-    fn cdf(&self, lambda: f64) -> Option<f64> {
-        let c = (lambda - LAMBDA_MIN) / LAMBDA_WIDTH;
-        Some(if c > 0.0 { c.min(1.0) } else { 0.0 })
-    }
-}
-
-/// pbrt-v4's visible-wavelength density, `∝ 1/cosh²(a·(λ − 538))` with
-/// `a = 0.0072/nm`, renormalised to 380–730 nm. Its CDF is a difference of
-/// `tanh`, inverted by one `atanh` per wavelength; its constants are
-/// computed once (here, as literals; a test checks them against `tanh`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Visible;
-
-impl Visible {
-    const A: f64 = 0.0072;
-    const CENTER: f64 = 538.0;
-    /// `tanh(a·(380 − 538))`.
-    pub(crate) const T0: f64 = -0.813_604_361_381_150_8;
-    /// `tanh(a·(730 − 538))`.
-    pub(crate) const T1: f64 = 0.881_487_552_831_487_7;
-    /// `a / (T1 − T0)`: the density is this times `1 − tanh²`.
-    const NORM: f64 = Self::A / (Self::T1 - Self::T0);
-
-    /// `tanh(a·(λ − 538))`, the CDF's numerator, for λ in the range.
-    #[inline]
-    fn tanh_at(lambda: f64) -> f64 {
-        (Self::A * (lambda - Self::CENTER)).tanh()
-    }
-}
-
-impl WavelengthPdf for Visible {
-    #[inline]
-    fn sample(&self, u: f64) -> f64 {
-        self.sample_with_inv_pdf(u).0
-    }
-
-    #[inline]
-    fn pdf(&self, lambda: f64) -> f64 {
-        if !(LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) {
-            return 0.0;
-        }
-        let y = Self::tanh_at(lambda);
-        Self::NORM * (1.0 - y * y)
-    }
-
-    fn cdf(&self, lambda: f64) -> Option<f64> {
-        if lambda.is_nan() {
-            return Some(0.0);
-        }
-        let l = lambda.clamp(LAMBDA_MIN, LAMBDA_MAX);
-        Some((Self::tanh_at(l) - Self::T0) / (Self::T1 - Self::T0))
-    }
-
-    /// One `atanh`: at `y = tanh(a·(λ − 538))`, `1/cosh² = 1 − y²`, so the
-    /// density needs no `cosh`.
-    #[inline]
-    fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
-        let y = Self::T0 + unit(u) * (Self::T1 - Self::T0);
-        let lambda = (Self::CENTER + y.atanh() / Self::A).clamp(LAMBDA_MIN, LAMBDA_MAX);
-        (lambda, reciprocal(Self::NORM * (1.0 - y * y)))
-    }
-}
+use crate::spectrum::Spectrum;
 
 /// A density that follows a light, or any spectrum: `∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)`,
 /// tabulated exactly (see `light_pdf.rs`) when the pdf is made (about 7 µs
@@ -279,24 +130,5 @@ impl WavelengthPdf for LightPdf {
     fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
         let (lambda, pdf) = self.table.sample_with_pdf(u);
         (lambda, reciprocal(pdf))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The literal constants are what they say they are.
-    #[test]
-    fn visible_constants_are_tanh_of_the_range_ends() {
-        let t0 = (Visible::A * (LAMBDA_MIN - Visible::CENTER)).tanh();
-        let t1 = (Visible::A * (LAMBDA_MAX - Visible::CENTER)).tanh();
-        assert!((Visible::T0 - t0).abs() <= 2.0 * f64::EPSILON, "{} against {t0}", Visible::T0);
-        assert!((Visible::T1 - t1).abs() <= 2.0 * f64::EPSILON, "{} against {t1}", Visible::T1);
-        // The density integrates to 1 over the range (midpoint rule, 0.01 nm).
-        let n = 35_000;
-        let total: f64 =
-            (0..n).map(|i| Visible.pdf(LAMBDA_MIN + (i as f64 + 0.5) * LAMBDA_WIDTH / n as f64)).sum::<f64>();
-        assert!((total * LAMBDA_WIDTH / n as f64 - 1.0).abs() < 1e-9);
     }
 }

@@ -36,7 +36,7 @@ use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, TabulatedSpectrum, observer, quadr
 /// wavelength). Exact.
 #[must_use]
 pub fn hero<const K: usize>(light: &TabulatedSpectrum, surface: &TabulatedSpectrum) -> Xyz {
-    hero_with::<K>(light, surface, &Uniform)
+    hero_with::<K>(light, surface, &Uniform::ASSIGNMENT)
 }
 
 /// Per-channel variance of one `HeroSample<K>` estimate of

@@ -20,8 +20,8 @@
 use std::borrow::Cow;
 
 use crate::error::Error;
+use crate::spectrum::WavelengthRange;
 use crate::spectrum::interface::{Pieces, Spectrum};
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// The same value at every wavelength.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -193,9 +193,9 @@ impl Spectrum for Blackbody {
     }
 
     /// Exact: Planck's law rises to its peak and falls after, so over
-    /// 380–730 nm it is largest at the peak or the end nearest it.
+    /// 360–830 nm it is largest at the peak or the end nearest it.
     fn max_value(&self) -> f64 {
-        self.eval(self.peak().clamp(LAMBDA_MIN, LAMBDA_MAX))
+        self.eval(self.peak().clamp(WavelengthRange::VISIBLE.min(), WavelengthRange::VISIBLE.max()))
     }
 }
 

@@ -1,4 +1,4 @@
-//! Dense tables: any spectrum at every whole nanometre from 380 to 730 nm,
+//! Dense tables: any spectrum at every whole nanometre from 360 to 830 nm,
 //! kept in `f32` and `f64`, looked up at the nearest one: the fast
 //! tabulated path, as pbrt-v4's `DenselySampledSpectrum` (also 1 nm, also
 //! rounded). Wavelengths in `f32` read the `f32` table, in `f64` the `f64`
@@ -8,8 +8,9 @@
 //! when it is drawn ([`Wavelengths::nearest_nm`]); a [`DenseSpectrum`]
 //! sampled at it is then one load per wavelength, with no conversion and
 //! no interpolation, and a [`DenseObserver`] gives the wavelength's x̄, ȳ,
-//! z̄ as one 16-byte (`f32`) row. Outside 380–730 nm a dense table is
-//! zero.
+//! z̄ as one 16-byte (`f32`) row. Outside 360–830 nm a dense table is
+//! zero (and so is a spectrum outside its own data: the assignment's
+//! patches beyond 730 nm).
 //!
 //! **Accuracy** (measured in `tests/properties/dense.rs`). Point by point a dense
 //! table is a step: off its source by up to half a nanometre's change (the
@@ -43,15 +44,14 @@ use std::borrow::Cow;
 use crate::spectrum::dense_table::DenseSpectrum;
 use crate::spectrum::float::Float;
 use crate::spectrum::interface::{Pieces, Spectrum};
-use crate::spectrum::lookup::{DENSE_ENTRIES, nearest_nm};
+use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_RANGE, nearest_nm};
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
 impl DenseSpectrum {
-    /// `s` at every whole nanometre from 380 to 730 (and rounded to `f32`).
+    /// `s` at every whole nanometre from 360 to 830 (and rounded to `f32`).
     #[must_use]
     pub fn new(s: &(impl Spectrum + ?Sized)) -> Self {
-        let knots: Vec<f64> = (0..DENSE_ENTRIES - 1).map(|i| LAMBDA_MIN + i as f64).collect();
+        let knots: Vec<f64> = (0..DENSE_ENTRIES - 1).map(|i| DENSE_RANGE.min() + i as f64).collect();
         let mut at = vec![0.0; knots.len()];
         s.eval_many(&knots, &mut at);
         let values: [f64; DENSE_ENTRIES] = std::array::from_fn(|i| at.get(i).copied().unwrap_or(0.0));
@@ -107,19 +107,19 @@ impl Spectrum for DenseSpectrum {
         DenseSpectrum::sample(self, at)
     }
 
-    /// Exact: the largest of its 351 values (it is a step function over
-    /// 380–730 nm).
+    /// Exact: the largest of its 471 values (it is a step function over
+    /// 360–830 nm).
     fn max_value(&self) -> f64 {
         self.values::<f64>().iter().copied().fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// Steps: constant between half nanometres (and zero outside
-    /// 380–730 nm).
+    /// 360–830 nm).
     fn pieces(&self) -> Option<Pieces<'_>> {
         static BREAKS: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
         let breaks = BREAKS.get_or_init(|| {
-            let halves = (0..DENSE_ENTRIES - 2).map(|i| LAMBDA_MIN + 0.5 + i as f64);
-            std::iter::once(LAMBDA_MIN).chain(halves).chain([LAMBDA_MAX]).collect()
+            let halves = (0..DENSE_ENTRIES - 2).map(|i| DENSE_RANGE.min() + 0.5 + i as f64);
+            std::iter::once(DENSE_RANGE.min()).chain(halves).chain([DENSE_RANGE.max()]).collect()
         });
         Some(Pieces { breaks: Cow::Borrowed(breaks), degree: 0 })
     }

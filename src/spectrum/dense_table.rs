@@ -1,5 +1,5 @@
 //! The table behind [`DenseSpectrum`]: a spectrum's values at every whole
-//! nanometre from 380 to 730 nm in `f32` and `f64`, and their lookup at K
+//! nanometre from 360 to 830 nm in `f32` and `f64`, and their lookup at K
 //! wavelengths. Below the `Spectrum` trait, which names this type for the
 //! dense table's fast path behind a pointer
 //! ([`Spectrum::as_dense`](super::Spectrum::as_dense)); the trait's
@@ -18,18 +18,18 @@ use crate::spectrum::float::Float;
 use crate::spectrum::lookup::{DENSE_ENTRIES, entry};
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 
-/// A spectrum at every whole nanometre from 380 to 730 nm, in `f32` and
+/// A spectrum at every whole nanometre from 360 to 830 nm, in `f32` and
 /// `f64`, looked up at the nearest one.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DenseSpectrum {
-    /// At 380, 381, …, 730 nm, then a zero (for wavelengths outside).
+    /// At 360, 361, …, 830 nm, then a zero (for wavelengths outside).
     values: Box<[f64; DENSE_ENTRIES]>,
     /// The same, rounded to `f32`.
     values_f32: Box<[f32; DENSE_ENTRIES]>,
 }
 
 impl DenseSpectrum {
-    /// The table of `values` at 380, 381, …, 730 nm, then 0 (`f64`), and
+    /// The table of `values` at 360, 361, …, 830 nm, then 0 (`f64`), and
     /// the same rounded to `f32`.
     pub(crate) fn from_values(values: [f64; DENSE_ENTRIES]) -> Self {
         let values_f32 = values.map(|v| v as f32);
@@ -42,11 +42,11 @@ impl DenseSpectrum {
         entry(T::choose_row(&self.values_f32, &self.values), i)
     }
 
-    /// The values at 380, 381, …, 730 nm, in precision `T`.
+    /// The values at 360, 361, …, 830 nm, in precision `T` (index 20 is 380 nm).
     #[must_use]
     pub fn values<T: Float>(&self) -> &[T; DENSE_ENTRIES - 1] {
         let all = T::choose_row(&self.values_f32, &self.values);
-        all.first_chunk().expect("351 of 352 entries")
+        all.first_chunk().expect("471 of 472 entries")
     }
 
     /// The values at K wavelengths (a hero sample's or a fixed rule's), at

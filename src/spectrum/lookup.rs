@@ -13,30 +13,37 @@
 //!   `spectrum/simd/x86.rs` (AVX loads and stores, and calls into AVX2
 //!   code after the processor said it has it).
 //! - The 1 nm grid of dense tables ([`nearest_nm`]): the nearest whole
-//!   nanometre from 380 to 730 nm as an index 0 to 350, or
-//!   [`OUTSIDE`] (351) outside, where dense tables hold a zero. Computed
+//!   nanometre from 360 to 830 nm (the renderers' range, which holds the
+//!   assignment's) as an index 0 to 470, or [`OUTSIDE`] (471) outside,
+//!   where dense tables hold a zero. Computed
 //!   once per wavelength when a sample is drawn; looking it up is then one
 //!   load.
 
 use speclab_tables::interp;
 
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+use crate::spectrum::{LAMBDA_MIN, WavelengthRange};
 
-/// Entries of a dense table: 351 whole nanometres (380 to 730) and a zero.
-pub(crate) const DENSE_ENTRIES: usize = 352;
+/// The dense grid's range: 360–830 nm.
+pub(crate) const DENSE_RANGE: WavelengthRange = WavelengthRange::VISIBLE;
 
-/// The index of a wavelength outside 380–730 nm (or NaN) on the dense
+/// Entries of a dense table: 471 whole nanometres (360 to 830) and a zero.
+pub(crate) const DENSE_ENTRIES: usize = 472;
+
+/// The index of a wavelength outside 360–830 nm (or NaN) on the dense
 /// grid: the zero entry.
-pub(crate) const OUTSIDE: u16 = 351;
+pub(crate) const OUTSIDE: u16 = 471;
 
-/// The nearest whole nanometre to `lambda` as an index from 380 nm (0 to
-/// 350), or [`OUTSIDE`] for a wavelength outside 380–730 nm or NaN.
+/// The index of 380 nm, where the assignment's range starts.
+pub(crate) const ASSIGNMENT_OFFSET: u16 = (LAMBDA_MIN - DENSE_RANGE.min()) as u16;
+
+/// The nearest whole nanometre to `lambda` as an index from 360 nm (0 to
+/// 470), or [`OUTSIDE`] for a wavelength outside 360–830 nm or NaN.
 #[inline(always)]
 pub(crate) fn nearest_nm(lambda: f64) -> u16 {
-    let x = lambda - LAMBDA_MIN;
-    // In range, x + ½ lies in [½, 350½]: its integer part is the nearest
+    let x = lambda - DENSE_RANGE.min();
+    // In range, x + ½ lies in [½, 470½]: its integer part is the nearest
     // whole nanometre (halves round up). NaN fails the test.
-    if x >= 0.0 && lambda <= LAMBDA_MAX { (x + 0.5) as u16 } else { OUTSIDE }
+    if x >= 0.0 && lambda <= DENSE_RANGE.max() { (x + 0.5) as u16 } else { OUTSIDE }
 }
 
 /// An equidistant table's geometry, for O(1) segment lookup.
@@ -121,12 +128,14 @@ mod tests {
 
     #[test]
     fn nearest_nm_rounds_and_marks_the_outside() {
-        assert_eq!(nearest_nm(380.0), 0);
-        assert_eq!(nearest_nm(380.49), 0);
-        assert_eq!(nearest_nm(380.5), 1);
-        assert_eq!(nearest_nm(729.6), 350);
-        assert_eq!(nearest_nm(730.0), 350);
-        for outside in [379.999, 730.001, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        assert_eq!(nearest_nm(360.0), 0);
+        assert_eq!(nearest_nm(380.0), ASSIGNMENT_OFFSET);
+        assert_eq!(nearest_nm(380.49), 20);
+        assert_eq!(nearest_nm(380.5), 21);
+        assert_eq!(nearest_nm(729.6), 370);
+        assert_eq!(nearest_nm(829.6), 470);
+        assert_eq!(nearest_nm(830.0), 470);
+        for outside in [359.999, 830.001, f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
             assert_eq!(nearest_nm(outside), OUTSIDE, "{outside}");
         }
     }

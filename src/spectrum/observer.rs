@@ -16,10 +16,11 @@
 //! ```
 
 use crate::spectrum::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
+use crate::spectrum::data::observers;
 use crate::spectrum::data::{CIE_X_COEFFS, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_COEFFS};
 use crate::spectrum::float::Float;
 use crate::spectrum::interp;
-use crate::spectrum::lookup::{DENSE_ENTRIES, OUTSIDE, UniformLookup, entry};
+use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_RANGE, OUTSIDE, UniformLookup, entry};
 use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::Wavelengths;
 use crate::spectrum::tabulated::TabulatedSpectrum;
@@ -200,42 +201,98 @@ const LOOKUP: UniformLookup = match UniformLookup::for_table(&CIE_Y_LAMBDA, SEGM
     None => panic!("the CIE tables are equidistant"),
 };
 
-/// The CIE 1931 observer at every whole nanometre from 380 to 730 nm, in
-/// `f32` and `f64`: one row `[x̄, ȳ, z̄, 1]` per nanometre, computed at
-/// compile time, looked up at the nearest one in the wavelengths'
-/// precision. A zero-sized value.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct DenseObserver;
+/// An observer at every whole nanometre from 360 to 830 nm, in `f32` and
+/// `f64`: one row `[x̄, ȳ, z̄, 1]` per nanometre, computed at compile time,
+/// looked up at the nearest one in the wavelengths' precision (a
+/// reference to static rows). [`DenseObserver::ASSIGNMENT`] (the default,
+/// [`DenseObserver::new`]) is the assignment's cubic at whole nanometres,
+/// zero outside 380–780 nm; [`DenseObserver::CIE_1931`] and
+/// [`DenseObserver::CIE_1964`] are the CIE's 1 nm tables as they are
+/// (`StandardObserver::dense` gives each observer's).
+#[derive(Clone, Copy)]
+pub struct DenseObserver {
+    rows: &'static DenseRows,
+}
+
+/// The rows of a dense observer, then `[0, 0, 0, 1]` outside.
+struct DenseRows {
+    name: &'static str,
+    f64: [[f64; 4]; DENSE_ENTRIES],
+    f32: [[f32; 4]; DENSE_ENTRIES],
+}
 
 impl DenseObserver {
-    /// The dense observer (nothing to build: its rows are static).
+    /// The assignment's 5 nm CIE 1931 table, cubic, at every whole nanometre.
+    pub const ASSIGNMENT: DenseObserver = DenseObserver { rows: &ASSIGNMENT_ROWS };
+    /// The CIE 1931 2° observer's 1 nm table.
+    pub const CIE_1931: DenseObserver = DenseObserver { rows: &CIE_1931_ROWS };
+    /// The CIE 1964 10° observer's 1 nm table.
+    pub const CIE_1964: DenseObserver = DenseObserver { rows: &CIE_1964_ROWS };
+
+    /// [`DenseObserver::ASSIGNMENT`] (nothing to build: its rows are static).
     #[must_use]
     pub const fn new() -> Self {
-        DenseObserver
+        Self::ASSIGNMENT
+    }
+}
+
+impl Default for DenseObserver {
+    fn default() -> Self {
+        Self::ASSIGNMENT
+    }
+}
+
+impl PartialEq for DenseObserver {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::eq(self.rows, other.rows)
+    }
+}
+
+impl Eq for DenseObserver {}
+
+impl std::fmt::Debug for DenseObserver {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "DenseObserver({})", self.rows.name)
     }
 }
 
 impl Observer for DenseObserver {
     #[inline(always)]
     fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
-        let (nearest, rows) = (at.nearest_nm(), T::choose(&ROWS_F32, &ROWS_F64));
+        let (nearest, rows) = (at.nearest_nm(), T::choose(&self.rows.f32, &self.rows.f64));
         std::array::from_fn(|j| entry(rows, nearest[j]))
     }
 }
 
-/// The observer's rows at every whole nanometre, then zeros.
-static ROWS_F64: [[f64; 4]; DENSE_ENTRIES] = observer_rows();
-/// The same, rounded to `f32`.
-static ROWS_F32: [[f32; 4]; DENSE_ENTRIES] = crate::spectrum::float::rounded(&ROWS_F64);
+static ASSIGNMENT_ROWS: DenseRows = dense_rows("assignment", &assignment_rows());
+static CIE_1931_ROWS: DenseRows = dense_rows("CIE 1931 2°", &table_rows(&observers::CIE_1931_2));
+static CIE_1964_ROWS: DenseRows = dense_rows("CIE 1964 10°", &table_rows(&observers::CIE_1964_10));
 
-/// `[x̄, ȳ, z̄, 1]` per whole nanometre, and `[0, 0, 0, 1]` outside (a
-/// wavelength outside weighs nothing but keeps its pdf).
-const fn observer_rows() -> [[f64; 4]; DENSE_ENTRIES] {
+/// Both precisions of `f64` rows.
+const fn dense_rows(name: &'static str, f64: &[[f64; 4]; DENSE_ENTRIES]) -> DenseRows {
+    DenseRows { name, f64: *f64, f32: crate::spectrum::float::rounded(f64) }
+}
+
+/// `[x̄, ȳ, z̄, 1]` of the assignment's cubic per whole nanometre, and
+/// `[0, 0, 0, 1]` outside (a wavelength outside weighs nothing but keeps
+/// its pdf).
+const fn assignment_rows() -> [[f64; 4]; DENSE_ENTRIES] {
     let mut out = [[0.0, 0.0, 0.0, 1.0]; DENSE_ENTRIES];
     let mut i = 0;
     while i < OUTSIDE as usize {
-        let [x, y, z] = xyz_bar_const(LAMBDA_MIN + i as f64);
+        let [x, y, z] = xyz_bar_const(DENSE_RANGE.min() + i as f64);
         out[i] = [x, y, z, 1.0];
+        i += 1;
+    }
+    out
+}
+
+/// A 1 nm table over 360–830 nm as rows, then `[0, 0, 0, 1]`.
+const fn table_rows(table: &[[f64; 3]; DENSE_ENTRIES - 1]) -> [[f64; 4]; DENSE_ENTRIES] {
+    let mut out = [[0.0, 0.0, 0.0, 1.0]; DENSE_ENTRIES];
+    let mut i = 0;
+    while i < DENSE_ENTRIES - 1 {
+        out[i] = [table[i][0], table[i][1], table[i][2], 1.0];
         i += 1;
     }
     out

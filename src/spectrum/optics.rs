@@ -32,7 +32,7 @@ use crate::spectrum::interface::{Pieces, Spectrum};
 use crate::spectrum::interp;
 use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::validate::Role;
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, WavelengthRange};
 
 /// A conductor's complex refractive index `η + i·k`, as two tables.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -156,7 +156,8 @@ impl Sellmeier {
     pub fn new(b: [f64; 3], c: [f64; 3]) -> Result<Self, Error> {
         let finite = b.iter().chain(&c).all(|v| v.is_finite()) && c.iter().all(|&v| v >= 0.0);
         let s = Sellmeier { b, c };
-        let resonance = c.iter().any(|&ci| (LAMBDA_MIN * 1e-3..=LAMBDA_MAX * 1e-3).contains(&ci.sqrt()));
+        let (min, max) = (WavelengthRange::VISIBLE.min(), WavelengthRange::VISIBLE.max());
+        let resonance = c.iter().any(|&ci| (min * 1e-3..=max * 1e-3).contains(&ci.sqrt()));
         if finite && !resonance && index_is_physical(&s) { Ok(s) } else { Err(Error::Dispersion) }
     }
 
@@ -182,10 +183,14 @@ impl Spectrum for Sellmeier {
 
     /// Exact when every Bᵢ ≥ 0: each term `Bᵢλ²/(λ² − Cᵢ)` then falls as λ
     /// grows (on either side of its resonance, none of which lies in
-    /// 380–730 nm), so n is largest at 380 nm. `+∞` (no bound known)
+    /// 360–830 nm), so n is largest at 360 nm. `+∞` (no bound known)
     /// otherwise.
     fn max_value(&self) -> f64 {
-        if self.b.iter().all(|&b| b >= 0.0) { self.eval(LAMBDA_MIN) } else { f64::INFINITY }
+        if self.b.iter().all(|&b| b >= 0.0) {
+            self.eval(WavelengthRange::VISIBLE.min())
+        } else {
+            f64::INFINITY
+        }
     }
 }
 
@@ -228,16 +233,16 @@ impl Spectrum for Cauchy {
     /// end or at its vertex.
     fn max_value(&self) -> f64 {
         let u = |lambda: f64| 1.0 / (lambda * 1e-3).powi(2);
-        let (lo, hi) = (u(LAMBDA_MAX), u(LAMBDA_MIN));
+        let (lo, hi) = (u(WavelengthRange::VISIBLE.max()), u(WavelengthRange::VISIBLE.min()));
         interp::segment_max([self.a, self.b, self.c, 0.0], lo, hi)
     }
 }
 
 /// True if `n` is finite and positive at every whole nanometre of
-/// 380–730 nm.
+/// 360–830 nm.
 fn index_is_physical(n: &impl Spectrum) -> bool {
-    (0..=350).all(|i| {
-        let v = n.eval(LAMBDA_MIN + f64::from(i));
+    (0..=470).all(|i| {
+        let v = n.eval(WavelengthRange::VISIBLE.min() + f64::from(i));
         v.is_finite() && v > 0.0
     })
 }

@@ -28,7 +28,7 @@ use std::borrow::Cow;
 
 use crate::spectrum::interface::Pieces;
 use crate::spectrum::interp;
-use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH};
+use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, WavelengthRange};
 
 /// `½ + x/(2√(1 + x²))` over a quadratic in `t = (λ − 380)/350`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,13 +62,15 @@ impl SigmoidPolynomial {
         sigmoid(self.c[2] + t * (self.c[1] + t * self.c[0]))
     }
 
-    /// Exact: the largest value over 380–730 nm. The sigmoid rises with its
-    /// argument, a quadratic in t ∈ [0, 1], largest at an end or at its
-    /// vertex.
+    /// Exact: the largest value over 360–830 nm (t from −20/350 to
+    /// 450/350). The sigmoid rises with its argument, a quadratic in t,
+    /// largest at an end or at its vertex.
     #[must_use]
     pub fn max_value(&self) -> f64 {
         let [c0, c1, c2] = self.c;
-        sigmoid(interp::segment_max([c2, c1, c0, 0.0], 0.0, 1.0))
+        let t = |lambda: f64| (lambda - LAMBDA_MIN) / LAMBDA_WIDTH;
+        let (lo, hi) = (t(WavelengthRange::VISIBLE.min()), t(WavelengthRange::VISIBLE.max()));
+        sigmoid(interp::segment_max([c2, c1, c0, 0.0], lo, hi))
     }
 
     /// `scale` times the values at `lambda` (nm), into `values`, in `f32`

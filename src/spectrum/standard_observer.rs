@@ -28,7 +28,7 @@
 use crate::error::Error;
 use crate::spectrum::data::cie1931::{X_BAR, Y_BAR, Z_BAR};
 use crate::spectrum::data::observers as tables;
-use crate::spectrum::{Float, Observer, WavelengthRange, Wavelengths, observer};
+use crate::spectrum::{DenseObserver, Float, Observer, WavelengthRange, Wavelengths, observer};
 
 /// A standard colorimetric observer.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -104,6 +104,17 @@ impl StandardObserver {
                 Some((tables::CIE_1964_10_FIRST, tables::CIE_1964_10_STEP, &tables::CIE_1964_10))
             }
             StandardObserver::Assignment => None,
+        }
+    }
+
+    /// The observer at every whole nanometre from 360 to 830 nm: the fast
+    /// path of a sampled renderer (one load per wavelength).
+    #[must_use]
+    pub const fn dense(self) -> DenseObserver {
+        match self {
+            StandardObserver::Cie1931 => DenseObserver::CIE_1931,
+            StandardObserver::Cie1964 => DenseObserver::CIE_1964,
+            StandardObserver::Assignment => DenseObserver::ASSIGNMENT,
         }
     }
 

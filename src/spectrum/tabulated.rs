@@ -27,6 +27,7 @@ use std::borrow::Cow;
 use std::fmt;
 
 use crate::error::Error;
+use crate::spectrum::WavelengthRange;
 use crate::spectrum::float::Float;
 use crate::spectrum::interface::{Pieces, Samples, Spectrum};
 use crate::spectrum::interp::{self, Coeffs};
@@ -34,7 +35,6 @@ use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{self, Interpolation, Role};
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
 
 /// Precomputed tables of a spectrum, as `speclab_tables::Codegen` writes them for
 /// static data: samples, the coefficients `[c0, c1, c2, c3]` of each
@@ -328,14 +328,14 @@ impl Spectrum for TabulatedSpectrum {
         Some(self.cumulative(lambda))
     }
 
-    /// Exact: the largest value of the clamped interpolant over 380–730 nm
+    /// Exact: the largest value of the clamped interpolant over 360–830 nm
     /// (each segment's polynomial at the ends of its part of the range and
     /// where its derivative vanishes), and 0 if the table does not cover
     /// the whole range.
     fn max_value(&self) -> f64 {
-        let (lo, hi) = (self.ends[0].max(LAMBDA_MIN), self.ends[1].min(LAMBDA_MAX));
-        let outside =
-            if self.ends[0] > LAMBDA_MIN || self.ends[1] < LAMBDA_MAX { 0.0 } else { f64::NEG_INFINITY };
+        let (min, max) = (WavelengthRange::VISIBLE.min(), WavelengthRange::VISIBLE.max());
+        let (lo, hi) = (self.ends[0].max(min), self.ends[1].min(max));
+        let outside = if self.ends[0] > min || self.ends[1] < max { 0.0 } else { f64::NEG_INFINITY };
         let mut best = outside;
         for (k, c) in self.coeffs.iter().enumerate() {
             let (a, b) = (self.lambda[k].max(lo), self.lambda[k + 1].min(hi));

@@ -98,7 +98,7 @@ fn pdfs_do_not_allocate() {
             let u = rng.random::<f64>();
             let h = HeroSample::<4>::from_pdf(u, &light);
             pixel += h.to_xyz(data::lights::F11.sample(&h) * data::patches::G4.sample(&h));
-            let h = HeroSample::<4>::from_pdf(u, &Visible);
+            let h = HeroSample::<4>::from_pdf(u, &Visible::ASSIGNMENT);
             pixel += h.to_xyz(data::lights::A.sample(&h));
             pixel += HeroSample::<1>::from_pdf(u, &balanced).to_xyz(SampledSpectrum::splat(1.0));
             pixel += HeroSample::<4>::from_pdf(u, &binned).to_xyz(SampledSpectrum::splat(1.0));

@@ -23,8 +23,8 @@ fn whole_nanometres_are_the_source() {
     for s in [&lights::F11 as &dyn Spectrum, &patches::G4, &cie1931::Z_BAR] {
         let d64 = DenseSpectrum::new(s);
         let (f64s, f32s) = (d64.values::<f64>(), d64.values::<f32>());
-        for i in 0..=350 {
-            let l = 380.0 + f64::from(i);
+        for i in 0..=470 {
+            let l = 360.0 + f64::from(i);
             assert_eq!(d64.eval(l), s.eval(l), "{l}");
             // The f32 table, what f32 wavelengths read, is the f64 one rounded.
             assert_eq!((f64s[i as usize], f32s[i as usize]), (s.eval(l), s.eval(l) as f32), "{l}");
@@ -32,11 +32,11 @@ fn whole_nanometres_are_the_source() {
             d64.eval_many_f32(&[l as f32], &mut one);
             assert_eq!(one[0], s.eval(l) as f32, "{l}");
             // A step: the same value to either side, up to half a
-            // nanometre (within 380–730 nm).
-            assert_eq!(d64.eval((l - 0.49).max(380.0)), d64.eval(l));
-            assert_eq!(d64.eval((l + 0.49).min(730.0)), d64.eval(l));
+            // nanometre (within 360–830 nm).
+            assert_eq!(d64.eval((l - 0.49).max(360.0)), d64.eval(l));
+            assert_eq!(d64.eval((l + 0.49).min(830.0)), d64.eval(l));
         }
-        assert_eq!((f64s.len(), f32s.len()), (351, 351));
+        assert_eq!((f64s.len(), f32s.len()), (471, 471));
     }
 }
 
@@ -80,12 +80,13 @@ fn integrals_within_the_stated_error() {
 #[test]
 fn zero_outside_the_range() {
     let d = DenseSpectrum::new(&lights::D65);
-    for l in [379.999, 730.001, f64::NAN, f64::NEG_INFINITY, f64::INFINITY] {
+    for l in [359.999, 830.001, f64::NAN, f64::NEG_INFINITY, f64::INFINITY] {
         assert_eq!(d.eval(l), 0.0, "{l}");
     }
+    assert!(d.eval(380.0) > 0.0 && d.eval(780.0) > 0.0 && d.eval(781.0) == 0.0, "D65's table: 380–780 nm");
     let breaks = d.pieces().expect("steps").breaks;
-    assert_eq!((breaks.len(), breaks[0], breaks[1], breaks[351]), (352, 380.0, 380.5, 730.0));
-    let at = [f64::NAN, 379.0, 731.0];
+    assert_eq!((breaks.len(), breaks[0], breaks[1], breaks[471]), (472, 360.0, 360.5, 830.0));
+    let at = [f64::NAN, 359.0, 831.0];
     // No weight outside, and the pdf's column kept.
     assert_eq!(DenseObserver::new().xyz_bar_at(&at), [[0.0, 0.0, 0.0, 1.0]; 3]);
 }
@@ -95,7 +96,7 @@ fn zero_outside_the_range() {
 #[test]
 fn the_dense_observer_is_dense_tables() {
     let tables = [&cie1931::X_BAR, &cie1931::Y_BAR, &cie1931::Z_BAR].map(DenseSpectrum::new);
-    let (d64, d32) = (DenseObserver::new(), DenseObserver); // one observer, read in either precision
+    let (d64, d32) = (DenseObserver::new(), DenseObserver::new()); // one observer, read in either precision
     for i in 0..=3500 {
         let l = 380.0 + f64::from(i) * 0.1;
         let [row] = d64.xyz_bar_at(&[l]);

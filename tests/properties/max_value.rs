@@ -1,5 +1,5 @@
 //! `max_value` bounds every spectrum: never below its value at any point
-//! of a 0.01 nm grid over 380–730 nm; where it says it is exact (tables,
+//! of a 0.01 nm grid over 360–830 nm (the renderers' range); where it says it is exact (tables,
 //! dense tables, constants, blackbodies, sigmoid polynomials, Cauchy and
 //! Sellmeier formulas), no more than the grid's maximum plus what the grid
 //! can miss between its points.
@@ -15,13 +15,13 @@ use speclab::{LinearRgb, Role, Spectrum, TabulatedSpectrum};
 /// The grid's step, nm.
 const H: f64 = 0.01;
 
-/// The largest value on a 0.01 nm grid over 380–730 nm and at the
+/// The largest value on a 0.01 nm grid over 360–830 nm and at the
 /// spectrum's own samples there (a table's maximum can sit at the end of
 /// its support, between grid points), and what the grid can miss around
 /// its largest point: a smooth maximum between grid points lies at most
 /// `f''·(H/2)²/2 = |Δ²f|/8` above them.
 fn grid_max(s: &dyn Spectrum) -> (f64, f64) {
-    let grid: Vec<f64> = (0..=35_000).map(|i| s.eval(380.0 + f64::from(i) * H)).collect();
+    let grid: Vec<f64> = (0..=47_000).map(|i| s.eval(360.0 + f64::from(i) * H)).collect();
     let (i, top) = grid
         .iter()
         .enumerate()
@@ -31,7 +31,7 @@ fn grid_max(s: &dyn Spectrum) -> (f64, f64) {
         _ => 0.0,
     };
     let knots = s.samples().map(|k| k.lambda.to_vec()).unwrap_or_default();
-    let knots = knots.into_iter().filter(|l| (380.0..=730.0).contains(l));
+    let knots = knots.into_iter().filter(|l| (360.0..=830.0).contains(l));
     (knots.map(|l| s.eval(l)).fold(top, f64::max), miss)
 }
 

@@ -138,7 +138,7 @@ proptest! {
     fn pdfs_take_any_numbers(u in any_f64(), lambda in any_f64(), n in 0..50usize) {
         use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
         let binned = speclab::sampling::binned::BinnedPdf::new(&LightPdf::light(&data::lights::F11).expect("bright"), 1 + n).expect("bins");
-        let pdfs: [&dyn WavelengthPdf; 5] = [&Uniform, &Visible, &LightPdf::light(&data::lights::F11).expect("bright"), &LightPdf::balanced(&data::lights::A).expect("bright"), &binned];
+        let pdfs: [&dyn WavelengthPdf; 5] = [&Uniform::ASSIGNMENT, &Visible::ASSIGNMENT, &LightPdf::light(&data::lights::F11).expect("bright"), &LightPdf::balanced(&data::lights::A).expect("bright"), &binned];
         for p in pdfs {
             let l = p.sample(u);
             prop_assert!((380.0..=730.0).contains(&l), "{}", l);

@@ -12,8 +12,10 @@ use speclab::{Error, HeroSample, Role, TabulatedSpectrum};
 
 /// Every density, named, for the built-in lights.
 fn pdfs() -> Vec<(String, Box<dyn WavelengthPdf>)> {
-    let mut out: Vec<(String, Box<dyn WavelengthPdf>)> =
-        vec![("uniform".into(), Box::new(Uniform)), ("visible".into(), Box::new(Visible))];
+    let mut out: Vec<(String, Box<dyn WavelengthPdf>)> = vec![
+        ("uniform".into(), Box::new(Uniform::ASSIGNMENT)),
+        ("visible".into(), Box::new(Visible::ASSIGNMENT)),
+    ];
     for light in Light::APPENDIX {
         let l = light.spectrum();
         out.push((format!("light {light:?}"), Box::new(LightPdf::light(l).expect("bright"))));
@@ -159,7 +161,7 @@ fn spread_matches_exact_variance() {
     let mut worst = 0.0f64;
     for light in Light::APPENDIX {
         let l = light.spectrum();
-        let (visible, following) = (Visible, LightPdf::light(l).expect("bright"));
+        let (visible, following) = (Visible::ASSIGNMENT, LightPdf::light(l).expect("bright"));
         for patch in [Patch::G4, Patch::A1] {
             let s = patch.spectrum();
             let cases: [(&str, &dyn WavelengthPdf, usize); 4] = [

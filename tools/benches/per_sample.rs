@@ -98,8 +98,10 @@ fn drawing(c: &mut Criterion) {
     use speclab::sampling::binned::BinnedPdf;
     use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
     let light = LightPdf::light(&data::lights::F11).expect("bright");
-    let (binned_light, binned_visible) =
-        (BinnedPdf::new(&light, 256).expect("bins"), BinnedPdf::new(&Visible, 256).expect("bins"));
+    let (binned_light, binned_visible) = (
+        BinnedPdf::new(&light, 256).expect("bins"),
+        BinnedPdf::new(&Visible::ASSIGNMENT, 256).expect("bins"),
+    );
     let mut group = c.benchmark_group("drawing a hero sample, K=4");
     let mut next_u = sequence();
     group.bench_function("HeroSample::new (uniform, dense observer)", |b| {
@@ -109,10 +111,10 @@ fn drawing(c: &mut Criterion) {
         b.iter(|| HeroSample::<4>::exact(black_box(next_u())))
     });
     group.bench_function("from_pdf Uniform", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Uniform))
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Uniform::ASSIGNMENT))
     });
     group.bench_function("from_pdf Visible", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Visible))
+        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Visible::ASSIGNMENT))
     });
     group.bench_function("from_pdf BinnedPdf of Visible", |b| {
         b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &binned_visible))

@@ -86,16 +86,16 @@ impl WavelengthPdf for ChosenPdf {
     #[inline]
     fn pdf(&self, lambda: f64) -> f64 {
         match self {
-            ChosenPdf::Uniform => Uniform.pdf(lambda),
-            ChosenPdf::Visible => Visible.pdf(lambda),
+            ChosenPdf::Uniform => Uniform::ASSIGNMENT.pdf(lambda),
+            ChosenPdf::Visible => Visible::ASSIGNMENT.pdf(lambda),
             ChosenPdf::Table(t) => t.pdf(lambda),
         }
     }
 
     fn cdf(&self, lambda: f64) -> Option<f64> {
         match self {
-            ChosenPdf::Uniform => Uniform.cdf(lambda),
-            ChosenPdf::Visible => Visible.cdf(lambda),
+            ChosenPdf::Uniform => Uniform::ASSIGNMENT.cdf(lambda),
+            ChosenPdf::Visible => Visible::ASSIGNMENT.cdf(lambda),
             ChosenPdf::Table(t) => t.cdf(lambda),
         }
     }
@@ -103,8 +103,8 @@ impl WavelengthPdf for ChosenPdf {
     #[inline]
     fn inv_pdf(&self, lambda: f64) -> f64 {
         match self {
-            ChosenPdf::Uniform => Uniform.inv_pdf(lambda),
-            ChosenPdf::Visible => Visible.inv_pdf(lambda),
+            ChosenPdf::Uniform => Uniform::ASSIGNMENT.inv_pdf(lambda),
+            ChosenPdf::Visible => Visible::ASSIGNMENT.inv_pdf(lambda),
             ChosenPdf::Table(t) => t.inv_pdf(lambda),
         }
     }
@@ -112,8 +112,8 @@ impl WavelengthPdf for ChosenPdf {
     #[inline]
     fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
         match self {
-            ChosenPdf::Uniform => Uniform.sample_with_inv_pdf(u),
-            ChosenPdf::Visible => Visible.sample_with_inv_pdf(u),
+            ChosenPdf::Uniform => Uniform::ASSIGNMENT.sample_with_inv_pdf(u),
+            ChosenPdf::Visible => Visible::ASSIGNMENT.sample_with_inv_pdf(u),
             ChosenPdf::Table(t) => t.sample_with_inv_pdf(u),
         }
     }

@@ -43,7 +43,7 @@ pub fn estimate<const K: usize, R: Rng + ?Sized>(
     n: NonZeroUsize,
     rng: &mut R,
 ) -> Xyz {
-    estimate_with::<K, _, R>(light, surface, n, &Uniform, Strata::None, rng)
+    estimate_with::<K, _, R>(light, surface, n, &Uniform::ASSIGNMENT, Strata::None, rng)
 }
 
 /// [`estimate`] with wavelengths drawn from `pdf` and the n primary numbers
@@ -150,7 +150,7 @@ mod tests {
     fn widths_agree_with_compile_time_ones() {
         let n = NonZeroUsize::new(64).expect("64");
         let f11 = speclab::sampling::pdf::LightPdf::light(&lights::F11).expect("bright");
-        let pdfs: [&dyn WavelengthPdf; 2] = [&Uniform, &f11];
+        let pdfs: [&dyn WavelengthPdf; 2] = [&Uniform::ASSIGNMENT, &f11];
         for pdf in pdfs {
             for strata in Strata::ALL {
                 let rng = || rand::rngs::StdRng::seed_from_u64(9);

@@ -38,9 +38,10 @@ fn hero_is_the_per_sample_calls() {
         assert!(beta.max_value() > 0.0 && beta.max_value() < 0.5);
     }
     // In f32, the same wavelengths to rounding.
-    let single = Hero::new(vec![&lights::F11], vec![&patches::G4], DenseObserver, Uniform).precision::<f32>();
+    let single = Hero::new(vec![&lights::F11], vec![&patches::G4], DenseObserver::new(), Uniform::ASSIGNMENT)
+        .precision::<f32>();
     let path = single.path(0.25);
-    assert_eq!(path, HeroSample::<4, f32>::from_pdf_with(0.25, &Uniform, &DenseObserver));
+    assert_eq!(path, HeroSample::<4, f32>::from_pdf_with(0.25, &Uniform::ASSIGNMENT, &DenseObserver::new()));
     assert_eq!(single.one(), SampledSpectrum::<4, f32>::splat(1.0));
 }
 
@@ -49,7 +50,7 @@ fn hero_is_the_per_sample_calls() {
 /// paths within 1e-3).
 #[test]
 fn a_white_path_has_luminance_one_on_average() {
-    let hero = Hero::new(vec![&lights::D65], vec![&patches::A1], AssignmentObserver, Uniform);
+    let hero = Hero::new(vec![&lights::D65], vec![&patches::A1], AssignmentObserver, Uniform::ASSIGNMENT);
     let n = 4096;
     let mean =
         (0..n).map(|i| hero.luminance(&hero.path((i as f64 + 0.5) / n as f64), hero.one())).sum::<f64>()
@@ -109,7 +110,7 @@ fn rgb_is_triples() {
 #[test]
 fn indices_past_the_scene_give_nothing() {
     let (light, surface) = (&lights::F11, &patches::G4);
-    let hero = Hero::new(vec![light], vec![surface], DenseObserver::new(), Uniform);
+    let hero = Hero::new(vec![light], vec![surface], DenseObserver::new(), Uniform::ASSIGNMENT);
     let path = hero.path(0.3);
     assert_eq!(hero.emitted(&path, 1, hero.one()), Xyz::ZERO);
     assert_eq!(hero.albedo(&path, 7), SampledSpectrum::zero());

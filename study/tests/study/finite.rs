@@ -98,7 +98,7 @@ proptest! {
         use speclab_study::sampling::strata::Strata;
         let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
         for width in [0, 1, 4, 5, MAX_WIDTH, MAX_WIDTH + 1, usize::MAX] {
-            let (pdf, strata) = (speclab::sampling::pdf::Uniform, Strata::None);
+            let (pdf, strata) = (speclab::sampling::pdf::Uniform::ASSIGNMENT, Strata::None);
             let result = estimate_width(width, &lights::A, &patches::J4, NonZeroUsize::MIN, &pdf, strata, &mut rng);
             prop_assert_eq!(result.is_ok(), (1..=MAX_WIDTH).contains(&width));
         }
