@@ -9,8 +9,10 @@
 //! (blackbody, RGB-derived, closures) are integrated by quadrature on the
 //! same pieces (see `spectrum::Spectrum`).
 //!
-//! **One range for everything**: the integrals run over 380–730 nm (W =
-//! 350 nm). The perfect white ([`white`]) uses the same range as every
+//! **One range for the study**: [`xyz`], [`white`] and [`xyz_of_product`]
+//! run over 380–730 nm (W = 350 nm) with the assignment's observer;
+//! [`xyz_over`] takes another range and observer (360–830 nm and the CIE's
+//! 1 nm tables, for a renderer's). The perfect white ([`white`]) uses the same range as every
 //! colour, even for lights tabulated to 780 nm, so a white patch of
 //! reflectance 1 has exactly the white's XYZ, and every sampler (which
 //! draws within 380–730 nm) is unbiased for both.
@@ -36,9 +38,10 @@
 pub use crate::sampling::paths::ExactPaths;
 
 use crate::color::Xyz;
+use crate::error::Error;
 #[cfg(doc)]
 use crate::sampling::PreparedLight;
-use crate::spectrum::{Spectrum, integrate};
+use crate::spectrum::{Spectrum, StandardObserver, WavelengthRange, integrate};
 
 /// XYZ of `light × surface`, integrated piece by piece: exact for
 /// piecewise polynomials. For many surfaces under one light,
@@ -46,6 +49,27 @@ use crate::spectrum::{Spectrum, integrate};
 #[must_use]
 pub fn xyz(light: &(impl Spectrum + ?Sized), surface: &(impl Spectrum + ?Sized)) -> Xyz {
     xyz_of_product(&[&light as &dyn Spectrum, &surface])
+}
+
+/// XYZ of the product of `factors` over `range` with `observer`, exact as
+/// [`xyz_of_product`] (which is this over 380–730 nm with the assignment's
+/// observer); an error if the observer's data do not cover the range.
+///
+/// ```
+/// use speclab::{data::{lights, patches}, sampling::reference, Spectrum};
+/// use speclab::spectrum::{StandardObserver, WavelengthRange};
+/// let wide = reference::xyz_over(StandardObserver::Cie1931, WavelengthRange::VISIBLE, &[&lights::D65, &patches::G4])?;
+/// let narrow = reference::xyz(&lights::D65, &patches::G4);
+/// assert!((wide.y / narrow.y - 1.0).abs() < 1e-3); // G4 is zero beyond 730 nm, D65 beyond 780 nm
+/// assert!(reference::xyz_over(StandardObserver::Assignment, WavelengthRange::VISIBLE, &[&lights::D65]).is_err());
+/// # Ok::<(), speclab::Error>(())
+/// ```
+pub fn xyz_over(
+    observer: StandardObserver,
+    range: WavelengthRange,
+    factors: &[&dyn Spectrum],
+) -> Result<Xyz, Error> {
+    integrate::xyz_of_product_with(observer, range, factors).map(Xyz::from)
 }
 
 /// XYZ of the perfect white (reflectance 1 over 380–730 nm) under `light`.

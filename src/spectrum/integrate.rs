@@ -12,10 +12,12 @@
 //! about 1e-12 relative (`tests/properties/spectra.rs`). Results are `[X, Y, Z]`
 //! arrays at this floor; `sampling::reference` makes them `Xyz`.
 
+use crate::error::Error;
 use crate::spectrum::interface::Spectrum;
 use crate::spectrum::observer;
 use crate::spectrum::quadrature;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
+use crate::spectrum::{StandardObserver, WavelengthRange};
 
 /// The degrees added to the rule for factors that are not piecewise
 /// polynomial: on pieces of at most 5 nm, a 12-point rule for a light, a
@@ -27,10 +29,21 @@ pub(crate) const SMOOTH_EXTRA: usize = 16;
 /// product times a matching function.
 fn pieces(factors: &[&dyn Spectrum], a: f64, b: f64) -> (Vec<f64>, usize) {
     let mut points = vec![a, b];
-    let mut degree = 3;
     for s in observer::CMFS {
         points.extend(s.breaks().iter().copied().filter(|&x| x > a && x < b));
     }
+    factor_pieces(factors, points, 3, a, b)
+}
+
+/// `points` with every break of `factors` inside `(a, b)`, as pieces, and
+/// `degree` (the observer's) raised by the factors'.
+fn factor_pieces(
+    factors: &[&dyn Spectrum],
+    mut points: Vec<f64>,
+    mut degree: usize,
+    a: f64,
+    b: f64,
+) -> (Vec<f64>, usize) {
     for f in factors {
         match f.pieces() {
             Some(p) => {
@@ -51,6 +64,30 @@ pub(crate) fn xyz_of_product(factors: &[&dyn Spectrum]) -> [f64; 3] {
         let f: f64 = factors.iter().map(|s| s.eval(lambda)).product();
         observer::xyz_bar(lambda).map(|c| c * f)
     })
+}
+
+/// `[X, Y, Z]` of the product of `factors` over `range` with `observer`
+/// (within its data): exact where every factor is piecewise polynomial.
+/// The CIE's 1 nm observers are lines between their nanometres (degree 1,
+/// a break at each); the assignment's is its cubic.
+pub(crate) fn xyz_of_product_with(
+    observer: StandardObserver,
+    range: WavelengthRange,
+    factors: &[&dyn Spectrum],
+) -> Result<[f64; 3], Error> {
+    let range = observer.check(range)?;
+    let (a, b) = (range.min(), range.max());
+    let (pieces, degree) = match observer.table() {
+        None => pieces(factors, a, b),
+        Some((first, step, rows)) => {
+            let knots = (0..rows.len()).map(|i| first + step * i as f64).filter(|&x| x > a && x < b);
+            factor_pieces(factors, [a, b].into_iter().chain(knots).collect(), 1, a, b)
+        }
+    };
+    Ok(quadrature::integrate(quadrature::for_degree(degree), &pieces, |lambda| {
+        let f: f64 = factors.iter().map(|s| s.eval(lambda)).product();
+        observer.xyz_bar(lambda).map(|c| c * f)
+    }))
 }
 
 /// `[X, Y, Z]` of the perfect white (reflectance 1) under `light`:
@@ -90,6 +127,26 @@ mod tests {
     use super::*;
     use crate::spectrum::data::{lights, patches};
     use crate::spectrum::{Blackbody, FnSpectrum, SigmoidPolynomial};
+
+    /// With the assignment's observer over its range, the same integral;
+    /// with a 1 nm observer, a constant integrates to the table's trapezoids.
+    #[test]
+    fn observers_and_ranges() {
+        let f: [&dyn Spectrum; 2] = [&lights::F11, &patches::G4];
+        let same =
+            xyz_of_product_with(StandardObserver::Assignment, WavelengthRange::ASSIGNMENT, &f).unwrap();
+        assert_eq!(same, xyz_of_product(&f));
+        let one = crate::spectrum::Constant::new(1.0);
+        for o in [StandardObserver::Cie1931, StandardObserver::Cie1964] {
+            let r = WavelengthRange::new(361.25, 829.5).unwrap();
+            let exact = xyz_of_product_with(o, r, &[&one]).unwrap();
+            let trapezoids = o.integrals(r).unwrap();
+            (0..3).for_each(|c| assert!((exact[c] - trapezoids[c]).abs() < 1e-12 * trapezoids[c], "{o:?}"));
+        }
+        let e =
+            xyz_of_product_with(StandardObserver::Cie1931, WavelengthRange::new(300.0, 700.0).unwrap(), &f);
+        assert!(matches!(e, Err(Error::RangeOutside { .. })));
+    }
 
     /// The documented accuracy of quadrature for smooth spectra: the rule
     /// used agrees with one of twice the points to 1e-12 relative.

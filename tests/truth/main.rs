@@ -7,6 +7,7 @@ mod appendix2;
 mod ciede2000;
 mod data;
 mod named;
+mod peers;
 mod planck;
 mod spaces;
 mod white;
