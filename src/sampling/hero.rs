@@ -124,7 +124,10 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
         };
         let p: [u32; K] = std::array::from_fn(position);
         let lambda = std::array::from_fn(|j| T::from_f64(LAMBDA_MIN + f64::from(p[j]) * (1.0 / 65536.0)));
-        let nearest = std::array::from_fn(|j| ((p[j] + 0x8000) >> 16) as u16 + ASSIGNMENT_OFFSET);
+        // The nearest whole nanometre's index from 360 nm: half a nanometre
+        // and 380 − 360 nm added in one constant before the shift.
+        const ROUND: u32 = 0x8000 + ((ASSIGNMENT_OFFSET as u32) << 16);
+        let nearest = std::array::from_fn(|j| ((p[j] + ROUND) >> 16) as u16);
         let h = HeroSample(Weighted { lambda, nearest, rows: [[T::ZERO; 4]; K] });
         Self::weighted(h, [T::from_f64(LAMBDA_WIDTH); K], observer)
     }

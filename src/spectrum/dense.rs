@@ -44,14 +44,14 @@ use std::borrow::Cow;
 use crate::spectrum::dense_table::DenseSpectrum;
 use crate::spectrum::float::Float;
 use crate::spectrum::interface::{Pieces, Spectrum};
-use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_RANGE, nearest_nm};
+use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_RANGE, DENSE_VALUES, nearest_nm};
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 
 impl DenseSpectrum {
     /// `s` at every whole nanometre from 360 to 830 (and rounded to `f32`).
     #[must_use]
     pub fn new(s: &(impl Spectrum + ?Sized)) -> Self {
-        let knots: Vec<f64> = (0..DENSE_ENTRIES - 1).map(|i| DENSE_RANGE.min() + i as f64).collect();
+        let knots: Vec<f64> = (0..DENSE_VALUES).map(|i| DENSE_RANGE.min() + i as f64).collect();
         let mut at = vec![0.0; knots.len()];
         s.eval_many(&knots, &mut at);
         let values: [f64; DENSE_ENTRIES] = std::array::from_fn(|i| at.get(i).copied().unwrap_or(0.0));
@@ -118,7 +118,7 @@ impl Spectrum for DenseSpectrum {
     fn pieces(&self) -> Option<Pieces<'_>> {
         static BREAKS: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
         let breaks = BREAKS.get_or_init(|| {
-            let halves = (0..DENSE_ENTRIES - 2).map(|i| DENSE_RANGE.min() + 0.5 + i as f64);
+            let halves = (0..DENSE_VALUES - 1).map(|i| DENSE_RANGE.min() + 0.5 + i as f64);
             std::iter::once(DENSE_RANGE.min()).chain(halves).chain([DENSE_RANGE.max()]).collect()
         });
         Some(Pieces { breaks: Cow::Borrowed(breaks), degree: 0 })

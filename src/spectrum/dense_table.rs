@@ -15,21 +15,21 @@
 //! ```
 
 use crate::spectrum::float::Float;
-use crate::spectrum::lookup::{DENSE_ENTRIES, entry};
+use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_VALUES, entry};
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 
 /// A spectrum at every whole nanometre from 360 to 830 nm, in `f32` and
 /// `f64`, looked up at the nearest one.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DenseSpectrum {
-    /// At 360, 361, …, 830 nm, then a zero (for wavelengths outside).
+    /// At 360, 361, …, 830 nm, then zeros (for wavelengths outside).
     values: Box<[f64; DENSE_ENTRIES]>,
     /// The same, rounded to `f32`.
     values_f32: Box<[f32; DENSE_ENTRIES]>,
 }
 
 impl DenseSpectrum {
-    /// The table of `values` at 360, 361, …, 830 nm, then 0 (`f64`), and
+    /// The table of `values` at 360, 361, …, 830 nm, then zeros (`f64`), and
     /// the same rounded to `f32`.
     pub(crate) fn from_values(values: [f64; DENSE_ENTRIES]) -> Self {
         let values_f32 = values.map(|v| v as f32);
@@ -44,7 +44,7 @@ impl DenseSpectrum {
 
     /// The values at 360, 361, …, 830 nm, in precision `T` (index 20 is 380 nm).
     #[must_use]
-    pub fn values<T: Float>(&self) -> &[T; DENSE_ENTRIES - 1] {
+    pub fn values<T: Float>(&self) -> &[T; DENSE_VALUES] {
         let all = T::choose_row(&self.values_f32, &self.values);
         all.first_chunk().expect("471 of 472 entries")
     }

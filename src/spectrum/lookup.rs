@@ -26,8 +26,12 @@ use crate::spectrum::{LAMBDA_MIN, WavelengthRange};
 /// The dense grid's range: 360–830 nm.
 pub(crate) const DENSE_RANGE: WavelengthRange = WavelengthRange::VISIBLE;
 
-/// Entries of a dense table: 471 whole nanometres (360 to 830) and a zero.
-pub(crate) const DENSE_ENTRIES: usize = 472;
+/// Whole nanometres of a dense table: 360 to 830.
+pub(crate) const DENSE_VALUES: usize = 471;
+
+/// Entries of a dense table: its 471 values, then zeros up to a power of
+/// two, so that a lookup masks its index instead of comparing it.
+pub(crate) const DENSE_ENTRIES: usize = 512;
 
 /// The index of a wavelength outside 360–830 nm (or NaN) on the dense
 /// grid: the zero entry.
@@ -119,7 +123,8 @@ impl UniformLookup {
 /// in bounds for any `i`.
 #[inline(always)]
 pub(crate) fn entry<R: Copy>(table: &[R; DENSE_ENTRIES], i: u16) -> R {
-    table[usize::from(i).min(DENSE_ENTRIES - 1)]
+    const { assert!(DENSE_ENTRIES.is_power_of_two() && OUTSIDE as usize >= DENSE_VALUES) };
+    table[usize::from(i) & (DENSE_ENTRIES - 1)]
 }
 
 #[cfg(test)]

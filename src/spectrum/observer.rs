@@ -20,7 +20,7 @@ use crate::spectrum::data::observers;
 use crate::spectrum::data::{CIE_X_COEFFS, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_COEFFS};
 use crate::spectrum::float::Float;
 use crate::spectrum::interp;
-use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_RANGE, OUTSIDE, UniformLookup, entry};
+use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_RANGE, DENSE_VALUES, UniformLookup, entry};
 use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::Wavelengths;
 use crate::spectrum::tabulated::TabulatedSpectrum;
@@ -279,7 +279,7 @@ const fn dense_rows(name: &'static str, f64: &[[f64; 4]; DENSE_ENTRIES]) -> Dens
 const fn assignment_rows() -> [[f64; 4]; DENSE_ENTRIES] {
     let mut out = [[0.0, 0.0, 0.0, 1.0]; DENSE_ENTRIES];
     let mut i = 0;
-    while i < OUTSIDE as usize {
+    while i < DENSE_VALUES {
         let [x, y, z] = xyz_bar_const(DENSE_RANGE.min() + i as f64);
         out[i] = [x, y, z, 1.0];
         i += 1;
@@ -288,10 +288,10 @@ const fn assignment_rows() -> [[f64; 4]; DENSE_ENTRIES] {
 }
 
 /// A 1 nm table over 360–830 nm as rows, then `[0, 0, 0, 1]`.
-const fn table_rows(table: &[[f64; 3]; DENSE_ENTRIES - 1]) -> [[f64; 4]; DENSE_ENTRIES] {
+const fn table_rows(table: &[[f64; 3]; DENSE_VALUES]) -> [[f64; 4]; DENSE_ENTRIES] {
     let mut out = [[0.0, 0.0, 0.0, 1.0]; DENSE_ENTRIES];
     let mut i = 0;
-    while i < DENSE_ENTRIES - 1 {
+    while i < DENSE_VALUES {
         out[i] = [table[i][0], table[i][1], table[i][2], 1.0];
         i += 1;
     }
