@@ -34,11 +34,13 @@ pub enum Cat {
     Cat02,
     /// CAM16's CAT16 (Li et al. 2017).
     Cat16,
+    /// XYZ itself as the cone space (the "wrong von Kries" of ICC v2).
+    XyzScaling,
 }
 
 impl Cat {
     /// Every transform, in the order above.
-    pub const ALL: [Cat; 4] = [Cat::VonKries, Cat::Bradford, Cat::Cat02, Cat::Cat16];
+    pub const ALL: [Cat; 5] = [Cat::VonKries, Cat::Bradford, Cat::Cat02, Cat::Cat16, Cat::XyzScaling];
 
     /// The cone response matrix (XYZ to cone space), as published.
     #[must_use]
@@ -56,6 +58,7 @@ impl Cat {
                 [-0.250268, 1.204414, 0.045854],
                 [-0.002079, 0.048952, 0.953127],
             ],
+            Cat::XyzScaling => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
         }
     }
 

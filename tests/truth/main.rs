@@ -5,6 +5,7 @@
 
 mod appendix2;
 mod ciede2000;
+mod colour_science;
 mod data;
 mod named;
 mod peers;
