@@ -76,9 +76,8 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     pub const UNIFORM_PDF: f64 = 1.0 / LAMBDA_WIDTH;
 
     /// The uniform hero sample for `u`, weighted by the dense observer
-    /// ([`DenseObserver`]: the CIE 1931 observer at the nearest whole
-    /// nanometre, as pbrt-v4 looks it up; zero outside 380–730 nm, where
-    /// [`AssignmentObserver`] has x̄, ȳ, z̄ up to 780 nm; over dense spectra its
+    /// ([`DenseObserver::ASSIGNMENT`]: the assignment's CIE 1931 observer at
+    /// the nearest whole nanometre, as pbrt-v4 looks its own up; over dense spectra its
     /// estimates are unbiased for the integral of the 1 nm steps, whose ∫ȳ
     /// is 6e-8 from the exact one): the fast path, and the one a renderer
     /// wants.
@@ -161,10 +160,10 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
 
     /// The sample of wavelengths `lambda` (nm) drawn with densities `pdf`
     /// (1/nm), from a renderer's own sampler and distribution, weighted by
-    /// the dense observer (zero outside 380–730 nm: a renderer drawing
-    /// from 360–830 nm gets nothing from the wavelengths outside; use
-    /// [`HeroSample::from_wavelengths_with`] and [`AssignmentObserver`] for x̄, ȳ, z̄
-    /// up to 780 nm). Each wavelength must be finite and each pdf
+    /// the assignment's dense observer (zero outside 380–780 nm: a renderer
+    /// drawing from 360–830 nm uses [`HeroSample::from_wavelengths_with`]
+    /// and `DenseObserver::CIE_1931`, the CIE's 1 nm table over 360–830 nm).
+    /// Each wavelength must be finite and each pdf
     /// finite and non-negative with a finite reciprocal (else an
     /// [`Error::SampleWavelength`]); a pdf of 0 marks a wavelength that
     /// contributes nothing.

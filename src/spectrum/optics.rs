@@ -152,7 +152,7 @@ impl Sellmeier {
     /// The formula of coefficients `b` and `c` (µm²): an
     /// [`Error::Dispersion`] unless every coefficient is finite, every Cᵢ
     /// non-negative, and n real, finite and positive at every nanometre
-    /// from 380 to 730 nm (no resonance inside).
+    /// from 360 to 830 nm (no resonance inside).
     pub fn new(b: [f64; 3], c: [f64; 3]) -> Result<Self, Error> {
         let finite = b.iter().chain(&c).all(|v| v.is_finite()) && c.iter().all(|&v| v >= 0.0);
         let s = Sellmeier { b, c };
@@ -207,7 +207,7 @@ pub struct Cauchy {
 impl Cauchy {
     /// The formula of `a`, `b` (µm²) and `c` (µm⁴): an
     /// [`Error::Dispersion`] unless all are finite and n is positive at
-    /// every nanometre from 380 to 730 nm.
+    /// every nanometre from 360 to 830 nm.
     pub fn new(a: f64, b: f64, c: f64) -> Result<Self, Error> {
         let s = Cauchy { a, b, c };
         if [a, b, c].iter().all(|v| v.is_finite()) && index_is_physical(&s) {

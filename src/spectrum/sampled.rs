@@ -37,7 +37,7 @@ pub trait Wavelengths<const K: usize, T: Float = f64> {
     fn lambda(&self) -> &[T; K];
 
     /// Each wavelength's place on the 1 nm grid of dense tables: the
-    /// nearest whole nanometre from 380 to 730 nm as 0 to 350, and 351 for
+    /// nearest whole nanometre from 360 to 830 nm as 0 to 470, and 471 for
     /// a wavelength outside (or NaN), where dense tables are zero. A
     /// hero sample computes these once, when it is drawn.
     #[inline]
