@@ -5,6 +5,8 @@
 //! - [`Tristimulus`]: `X, Y, Z` as sums over a grid of wavelengths
 //!   (observer, range, step), absolute or relative (`Y = 100` for the
 //!   perfect white under the light).
+//! - [`astm`]: ASTM E308 weighting tables (E2022's construction) for any
+//!   light, every 1 to 20 nm, and their adjustment to a measured range.
 //! - [`cct`]: the Planckian locus ([`cct::Planckian`]), CIE 1960 `u, v`,
 //!   and `(T, Duv)` of a chromaticity by Ohno 2013, both ways.
 //! - Around them, on the floors below: the observers and ranges
@@ -29,6 +31,7 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+pub mod astm;
 pub mod cct;
 mod tristimulus;
 

@@ -178,3 +178,55 @@ fn planck_law() {
         );
     }
 }
+
+/// `colorimetry/tests/test_tristimulus_values.py`:
+/// `test_tristimulus_weighting_factors_ASTME2022` and
+/// `test_adjust_tristimulus_weighting_factors_ASTME308`
+/// (`tests/data/astm_e308_weights.csv`). Illuminant A is the CIE's formula
+/// at 1 nm (colour's `sd_CIE_standard_illuminant_A`); D65 the CIE's 5 nm
+/// table, linear between, its 780 nm value held beyond (colour's
+/// `reshape_sd`). The three-decimal tables are ASTM E308-15's, colour notes.
+#[test]
+fn astm_e308_weighting_tables() {
+    use speclab::colorimetry::astm::Weights;
+    use speclab::data::lights;
+    use speclab::spectrum::{FnSpectrum, StandardObserver, WavelengthRange};
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/astm_e308_weights.csv");
+    let text = std::fs::read_to_string(path).expect("test data");
+    let table = |name: &str| -> Vec<[f64; 3]> {
+        text.lines()
+            .filter(|l| l.split(',').next() == Some(name))
+            .map(|l| {
+                let v: Vec<f64> = l.split(',').skip(2).map(|x| x.parse().expect("a number")).collect();
+                [v[0], v[1], v[2]]
+            })
+            .collect()
+    };
+    let a = FnSpectrum(|l: f64| {
+        let c2: f64 = 1.435e7;
+        100.0 * (560.0 / l).powi(5) * ((c2 / (2848.0 * 560.0)).exp_m1() / (c2 / (2848.0 * l)).exp_m1())
+    });
+    let d65 = FnSpectrum(|l: f64| lights::CIE_D65.eval(l.min(780.0)));
+    let three_decimals = |w: &Weights, expected: &[[f64; 3]], what: &str| {
+        assert_eq!(w.rows().len(), expected.len(), "{what}");
+        for (row, e) in w.rows().iter().zip(expected) {
+            close(&row.map(|v| (v * 1000.0).round() / 1000.0), e, TOLERANCE, what);
+        }
+    };
+    let (o1931, o1964) = (StandardObserver::Cie1931, StandardObserver::Cie1964);
+    three_decimals(&Weights::e2022(&a, o1964, 10).unwrap(), &table("TWF_A_CIE_1964_10_10"), "A, 10°, 10 nm");
+    three_decimals(&Weights::e2022(&a, o1964, 20).unwrap(), &table("TWF_A_CIE_1964_10_20"), "A, 10°, 20 nm");
+    let w = Weights::e2022(&d65, o1931, 20).unwrap();
+    three_decimals(&w, &table("TWF_D65_CIE_1931_2_20"), "D65, 2°, 20 nm");
+    let k1 = Weights::e2022_scaled(&d65, o1931, 20, 1.0).unwrap();
+    for (row, e) in k1.rows().iter().zip(table("TWF_D65_CIE_1931_2_20_K1")) {
+        close(row, &e, TOLERANCE, "D65, 2°, 20 nm, k = 1");
+    }
+    // The adjustment, applied (as colour's test does) to the three-decimal table.
+    let printed: Vec<[f64; 3]> = table("TWF_D65_CIE_1931_2_20");
+    let rounded = Weights::from_rows(360.0, 20, printed).unwrap();
+    let trimmed = rounded.trimmed(WavelengthRange::new(400.0, 700.0).unwrap()).unwrap();
+    for (row, e) in trimmed.rows().iter().zip(table("TWF_D65_CIE_1931_2_20_A")) {
+        close(row, &e, TOLERANCE, "adjusted to 400–700 nm");
+    }
+}

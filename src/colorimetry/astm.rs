@@ -1,0 +1,259 @@
+//! ASTM E308 weighting tables: tristimulus values from reflectances
+//! measured every 10 or 20 nm, as the ASTM computes its tables.
+//!
+//! A weight `Wᵢ` stands for a whole stretch of the 1 nm sum `Σ S·R·c̄`:
+//! the reflectance between two measured wavelengths is taken as the
+//! Lagrange polynomial through the nearest measurements (cubic inside,
+//! quadratic in the first and last interval), so each 1 nm term `S·c̄`
+//! is shared among those measurements by the Lagrange coefficients (ASTM
+//! E2022; the construction of ASTM E308's Table 5). The observer's 1 nm
+//! table over 360–830 nm is summed; nanometres past the last measured
+//! wavelength go to the last weight; the table is scaled so that the
+//! perfect white has `Y = 100`. [`Weights::trimmed`] folds the weights
+//! outside a measured range into its ends (E308's adjustment).
+//!
+//! ```
+//! use speclab::colorimetry::astm::Weights;
+//! use speclab::data::lights;
+//! use speclab::spectrum::StandardObserver;
+//! let w = Weights::e2022(&lights::CIE_D65, StandardObserver::Cie1931, 20)?;
+//! assert_eq!((w.first(), w.step(), w.rows().len()), (360.0, 20.0, 24));
+//! let y: f64 = w.rows().iter().map(|r| r[1]).sum();
+//! assert!((y - 100.0).abs() < 1e-12);
+//! # Ok::<(), speclab::Error>(())
+//! ```
+
+use crate::color::Xyz;
+use crate::error::Error;
+use crate::spectrum::{Spectrum, StandardObserver, WavelengthRange};
+
+/// The largest step, nm.
+pub const MAX_STEP: usize = 20;
+
+/// Weights `[W_x, W_y, W_z]` at `first + i·step` nm.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Weights {
+    first: f64,
+    step: usize,
+    rows: Vec<[f64; 3]>,
+}
+
+impl Weights {
+    /// ASTM E2022's weights for `light` and `observer` (a 1 nm table)
+    /// every `step` nm (1 to [`MAX_STEP`]) from 360 nm, scaled so that
+    /// `Σ W_y = 100`. The light is read at every nanometre of 360–830 nm
+    /// as it is (a table stopping at 780 nm is zero beyond: hold its end
+    /// with `io::Extend::Hold` if the ASTM's practice is wanted).
+    pub fn e2022(
+        light: &(impl Spectrum + ?Sized),
+        observer: StandardObserver,
+        step: usize,
+    ) -> Result<Self, Error> {
+        Self::e2022_with(light, observer, step, None)
+    }
+
+    /// [`Weights::e2022`] scaled by `k` instead (`k = 1`: not normalised).
+    pub fn e2022_scaled(
+        light: &(impl Spectrum + ?Sized),
+        observer: StandardObserver,
+        step: usize,
+        k: f64,
+    ) -> Result<Self, Error> {
+        Self::e2022_with(light, observer, step, Some(k))
+    }
+
+    fn e2022_with(
+        light: &(impl Spectrum + ?Sized),
+        observer: StandardObserver,
+        step: usize,
+        k: Option<f64>,
+    ) -> Result<Self, Error> {
+        let Some((first, 1.0, cmf)) = observer.table() else {
+            return Err(Error::UnknownName {
+                what: "an observer with a 1 nm table",
+                expected: &["CIE 1931", "CIE 1964"],
+                found: observer.name().to_string(),
+            });
+        };
+        if !(1..=MAX_STEP).contains(&step) {
+            return Err(Error::Step { step: step as f64, width: MAX_STEP as f64 });
+        }
+        let sc: Vec<[f64; 3]> =
+            cmf.iter().enumerate().map(|(i, c)| c.map(|v| v * light.eval(first + i as f64))).collect();
+        let mut rows = lagrange_weights(&sc, step);
+        let k = k.unwrap_or_else(|| 100.0 / rows.iter().map(|r| r[1]).sum::<f64>());
+        if !k.is_finite() {
+            return Err(Error::Dark {
+                range: [WavelengthRange::VISIBLE.min(), WavelengthRange::VISIBLE.max()],
+            });
+        }
+        rows.iter_mut().for_each(|r| *r = r.map(|v| v * k));
+        Ok(Weights { first, step, rows })
+    }
+
+    /// A table of one's own (a published one): `rows` at `first + i·step`
+    /// nm; an error unless there are rows and `step` is 1 to [`MAX_STEP`].
+    pub fn from_rows(first: f64, step: usize, rows: Vec<[f64; 3]>) -> Result<Self, Error> {
+        if !(1..=MAX_STEP).contains(&step) {
+            return Err(Error::Step { step: step as f64, width: MAX_STEP as f64 });
+        }
+        if rows.is_empty() || !first.is_finite() {
+            return Err(Error::Count {
+                what: "a weighting table's rows",
+                found: rows.len(),
+                min: 1,
+                max: usize::MAX,
+            });
+        }
+        Ok(Weights { first, step, rows })
+    }
+
+    /// The first wavelength, nm.
+    #[must_use]
+    pub fn first(&self) -> f64 {
+        self.first
+    }
+
+    /// The step, nm.
+    #[must_use]
+    pub fn step(&self) -> f64 {
+        self.step as f64
+    }
+
+    /// The weights, one row per wavelength.
+    #[must_use]
+    pub fn rows(&self) -> &[[f64; 3]] {
+        &self.rows
+    }
+
+    /// The table for reflectances measured over `range` only (its ends on
+    /// the table's wavelengths): each weight below the range added to the
+    /// first inside, each above to the last (ASTM E308, 7.3.2).
+    pub fn trimmed(&self, range: WavelengthRange) -> Result<Self, Error> {
+        let index = |lambda: f64| (lambda - self.first) / self.step as f64;
+        let (lo, hi) = (index(range.min()), index(range.max()));
+        let on_grid = |i: f64| i.fract() == 0.0 && i >= 0.0 && (i as usize) < self.rows.len();
+        if !(on_grid(lo) && on_grid(hi)) {
+            return Err(Error::RangeOutside {
+                range: [range.min(), range.max()],
+                observer: "weighting table's",
+                data: [self.first, self.first + (self.step * (self.rows.len() - 1)) as f64],
+            });
+        }
+        let (lo, hi) = (lo as usize, hi as usize);
+        let mut rows = self.rows[lo..=hi].to_vec();
+        let sum =
+            |part: &[[f64; 3]]| part.iter().fold([0.0; 3], |a, r| [a[0] + r[0], a[1] + r[1], a[2] + r[2]]);
+        let (below, above) = (sum(&self.rows[..lo]), sum(&self.rows[hi + 1..]));
+        let last = rows.len() - 1;
+        (0..3).for_each(|c| {
+            rows[0][c] += below[c];
+            rows[last][c] += above[c];
+        });
+        Ok(Weights { first: range.min(), step: self.step, rows })
+    }
+
+    /// `Σ Wᵢ·R(λᵢ)`: the tristimulus values of `reflectance` read at the
+    /// table's wavelengths.
+    pub fn xyz(&self, reflectance: &(impl Spectrum + ?Sized)) -> Xyz {
+        let mut sum = [0.0; 3];
+        for (i, w) in self.rows.iter().enumerate() {
+            let r = reflectance.eval(self.first + (self.step * i) as f64);
+            (0..3).for_each(|c| sum[c] += w[c] * r);
+        }
+        Xyz::from(sum)
+    }
+}
+
+/// The Lagrange basis polynomials through nodes 0, 1, …, n − 1, at `r`.
+fn lagrange<const N: usize>(r: f64) -> [f64; N] {
+    std::array::from_fn(|j| {
+        (0..N).filter(|&m| m != j).map(|m| (r - m as f64) / (j as f64 - m as f64)).product()
+    })
+}
+
+/// ASTM E2022's unscaled weights from the 1 nm products `S·c̄`: the
+/// sample's own term, then each nanometre between measurements shared by
+/// the Lagrange coefficients of its interval (quadratic in the first and
+/// last, cubic inside), then the nanometres past the last measurement.
+fn lagrange_weights(sc: &[[f64; 3]], step: usize) -> Vec<[f64; 3]> {
+    let n = sc.len();
+    let inner_count = step - 1;
+    let mut w: Vec<[f64; 3]> = sc.iter().step_by(step).copied().collect();
+    let last = w.len() - 1;
+    let boundary: Vec<[f64; 3]> = (1..step).map(|t| lagrange::<3>(t as f64 / step as f64)).collect();
+    let inner: Vec<[f64; 4]> = (1..step).map(|t| lagrange::<4>(1.0 + t as f64 / step as f64)).collect();
+    let mut add = |row: usize, coefficient: f64, term: [f64; 3]| {
+        (0..3).for_each(|c| w[row][c] += coefficient * term[c])
+    };
+    for t in 0..inner_count {
+        (0..3).for_each(|g| add(g, boundary[t][g], sc[t + 1]));
+    }
+    let first_of_last = n - (n - 1) % step - 1 - inner_count;
+    for t in 0..inner_count {
+        for g in (last - 2..=last).rev() {
+            add(g, boundary[inner_count - t - 1][last - g], sc[first_of_last + t]);
+        }
+    }
+    for q in 0..last - 2 {
+        for (t, coefficients) in inner.iter().enumerate() {
+            let at = step * (q + 1) + 1 + t;
+            (0..4).for_each(|j| add(q + j, coefficients[j], sc[at]));
+        }
+    }
+    for term in &sc[n - (n - 1) % step..] {
+        add(last, 1.0, *term);
+    }
+    w
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spectrum::Constant;
+
+    #[test]
+    fn lagrange_coefficients_interpolate() {
+        // Nodes 0, 1, 2, 3 at 1.5: the cubic's midpoint weights.
+        assert_eq!(lagrange::<4>(1.5), [-0.0625, 0.5625, 0.5625, -0.0625]);
+        assert_eq!(lagrange::<3>(0.5), [0.375, 0.75, -0.125]);
+        for r in [0.1, 0.7, 1.3] {
+            assert!((lagrange::<4>(r).iter().sum::<f64>() - 1.0).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn one_nanometre_weights_are_the_table() {
+        let w = Weights::e2022_scaled(&Constant::new(1.0), StandardObserver::Cie1931, 1, 1.0).unwrap();
+        let (_, _, rows) = StandardObserver::Cie1931.table().unwrap();
+        assert_eq!(w.rows(), rows);
+        // Any step: a constant reflectance sums to the white, Y = 100.
+        for step in [2, 5, 10, 20] {
+            let w = Weights::e2022(&Constant::new(1.0), StandardObserver::Cie1964, step).unwrap();
+            assert!((w.xyz(&Constant::new(0.5)).y - 50.0).abs() < 1e-12, "{step}");
+        }
+    }
+
+    #[test]
+    fn bad_steps_observers_and_ranges() {
+        let e = Constant::new(1.0);
+        for step in [0, 21] {
+            assert!(matches!(Weights::e2022(&e, StandardObserver::Cie1931, step), Err(Error::Step { .. })));
+        }
+        let a = Weights::e2022(&e, StandardObserver::Assignment, 10).unwrap_err().to_string();
+        assert!(a.contains("an observer with a 1 nm table"), "{a}");
+        assert!(matches!(
+            Weights::e2022(&Constant::new(0.0), StandardObserver::Cie1931, 10),
+            Err(Error::Dark { .. })
+        ));
+        let w = Weights::e2022(&e, StandardObserver::Cie1931, 20).unwrap();
+        for (a, b) in [(410.0, 700.0), (400.0, 710.0), (340.0, 700.0), (400.0, 840.0)] {
+            assert!(w.trimmed(WavelengthRange::new(a, b).unwrap()).is_err(), "{a}–{b}");
+        }
+        let t = w.trimmed(WavelengthRange::new(400.0, 700.0).unwrap()).unwrap();
+        assert_eq!((t.first(), t.rows().len()), (400.0, 16));
+        let (all, kept): (f64, f64) =
+            (w.rows().iter().map(|r| r[1]).sum(), t.rows().iter().map(|r| r[1]).sum());
+        assert!((all - kept).abs() < 1e-12, "nothing lost");
+    }
+}
