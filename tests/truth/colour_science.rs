@@ -1,3 +1,5 @@
+#![allow(clippy::excessive_precision)] // colour-science's expected values, digits as printed there
+
 //! colour-science 0.4.7's own tests, reproduced through speclab's public
 //! API: their inputs and expected values are published truth (the file and
 //! test of each are named), held to colour's tolerance
