@@ -232,3 +232,19 @@ fn astm_e308_weighting_tables() {
         close(row, &e, TOLERANCE, "adjusted to 400–700 nm");
     }
 }
+
+/// `colorimetry/tests/test_illuminants.py`: `test_sd_CIE_illuminant_D_series`
+/// (the formula at the nominal temperature times 1.4388/1.4380 against the
+/// CIE's D50, D55, D65 and D75 tables, to 0.001).
+#[test]
+fn daylight_series() {
+    use speclab::data::lights;
+    for (table, nominal) in
+        [(&lights::D50, 5000.0), (&lights::D55, 5500.0), (&lights::CIE_D65, 6500.0), (&lights::D75, 7500.0)]
+    {
+        let d = lights::daylight(nominal).unwrap();
+        for (&l, &v) in table.lambda().iter().zip(table.values()) {
+            assert!((d.eval(l) - v).abs() <= 0.001, "D{nominal} at {l} nm: {} against {v}", d.eval(l));
+        }
+    }
+}
