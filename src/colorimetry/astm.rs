@@ -251,7 +251,12 @@ mod tests {
             assert!(w.trimmed(WavelengthRange::new(a, b).unwrap()).is_err(), "{a}–{b}");
         }
         let t = w.trimmed(WavelengthRange::new(400.0, 700.0).unwrap()).unwrap();
-        assert_eq!((t.first(), t.rows().len()), (400.0, 16));
+        assert_eq!((t.first(), t.step(), t.rows().len()), (400.0, 20.0, 16));
+        assert!(Weights::from_rows(f64::NAN, 20, vec![[1.0; 3]]).is_err());
+        assert!(Weights::from_rows(360.0, 20, vec![]).is_err());
+        assert!(Weights::from_rows(360.0, 0, vec![[1.0; 3]]).is_err());
+        let own = Weights::from_rows(400.0, 5, vec![[1.0; 3]; 3]).unwrap();
+        assert_eq!((own.first(), own.step(), own.rows().len()), (400.0, 5.0, 3));
         let (all, kept): (f64, f64) =
             (w.rows().iter().map(|r| r[1]).sum(), t.rows().iter().map(|r| r[1]).sum());
         assert!((all - kept).abs() < 1e-12, "nothing lost");
