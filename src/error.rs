@@ -159,12 +159,13 @@ pub enum Error {
         /// The upper end given, nm.
         max: f64,
     },
-    /// A wavelength range beyond an observer's data.
+    /// A wavelength range beyond an observer's data (or a weighting
+    /// table's wavelengths).
     RangeOutside {
         /// The range asked for, nm.
         range: [f64; 2],
-        /// The observer's name.
-        observer: &'static str,
+        /// Whose data: `the CIE 1931 2° observer`, `the weighting table`.
+        of: &'static str,
         /// The range its data cover, nm.
         data: [f64; 2],
     },
@@ -270,11 +271,8 @@ impl fmt::Display for Error {
             Error::Range { min, max } => {
                 write!(f, "expected a wavelength range 0 < min < max nm, finite, found {min}–{max}")
             }
-            Error::RangeOutside { range: [a, b], observer, data: [lo, hi] } => {
-                write!(
-                    f,
-                    "expected a range within the {observer} observer's data ({lo}–{hi} nm), found {a}–{b} nm"
-                )
+            Error::RangeOutside { range: [a, b], of, data: [lo, hi] } => {
+                write!(f, "expected a range within {of}'s data ({lo}–{hi} nm), found {a}–{b} nm")
             }
             Error::Step { step, width } => {
                 write!(f, "expected a wavelength step in (0, {width}] nm, found {step}")

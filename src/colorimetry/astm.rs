@@ -136,7 +136,7 @@ impl Weights {
         if !(on_grid(lo) && on_grid(hi)) {
             return Err(Error::RangeOutside {
                 range: [range.min(), range.max()],
-                observer: "weighting table's",
+                of: "the weighting table",
                 data: [self.first, self.first + (self.step * (self.rows.len() - 1)) as f64],
             });
         }
@@ -248,7 +248,10 @@ mod tests {
         ));
         let w = Weights::e2022(&e, StandardObserver::Cie1931, 20).unwrap();
         for (a, b) in [(410.0, 700.0), (400.0, 710.0), (340.0, 700.0), (400.0, 840.0)] {
-            assert!(w.trimmed(WavelengthRange::new(a, b).unwrap()).is_err(), "{a}–{b}");
+            let e = w.trimmed(WavelengthRange::new(a, b).unwrap()).unwrap_err().to_string();
+            let expected =
+                format!("expected a range within the weighting table's data (360–820 nm), found {a}–{b} nm");
+            assert_eq!(e, expected);
         }
         let t = w.trimmed(WavelengthRange::new(400.0, 700.0).unwrap()).unwrap();
         assert_eq!((t.first(), t.step(), t.rows().len()), (400.0, 20.0, 16));

@@ -135,7 +135,11 @@ impl StandardObserver {
         } else {
             Err(Error::RangeOutside {
                 range: [range.min(), range.max()],
-                observer: self.name(),
+                of: match self {
+                    StandardObserver::Cie1931 => "the CIE 1931 2° observer",
+                    StandardObserver::Cie1964 => "the CIE 1964 10° observer",
+                    StandardObserver::Assignment => "the assignment's observer",
+                },
                 data: [data.min(), data.max()],
             })
         }
@@ -254,7 +258,13 @@ mod tests {
             e,
             "expected a range within the CIE 1931 2° observer's data (360–830 nm), found 300–830 nm"
         );
-        assert!(StandardObserver::Assignment.check(WavelengthRange::VISIBLE).is_err());
+        let e = StandardObserver::Assignment.check(WavelengthRange::VISIBLE).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "expected a range within the assignment's observer's data (380–780 nm), found 360–830 nm"
+        );
+        let e = StandardObserver::Cie1964.check(wide).unwrap_err().to_string();
+        assert!(e.starts_with("expected a range within the CIE 1964 10° observer's data"), "{e}");
         assert!(StandardObserver::Assignment.check(WavelengthRange::new(380.0, 780.0).unwrap()).is_ok());
     }
 }
