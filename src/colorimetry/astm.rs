@@ -260,6 +260,11 @@ mod tests {
         assert!(Weights::from_rows(360.0, 0, vec![[1.0; 3]]).is_err());
         let own = Weights::from_rows(400.0, 5, vec![[1.0; 3]; 3]).unwrap();
         assert_eq!((own.first(), own.step(), own.rows().len()), (400.0, 5.0, 3));
+        // Each weight reads the reflectance at its own wavelength.
+        let diagonal =
+            Weights::from_rows(400.0, 10, vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]).unwrap();
+        let ramp = crate::spectrum::FnSpectrum(|lambda: f64| lambda);
+        assert_eq!(diagonal.xyz(&ramp), Xyz::new(400.0, 410.0, 420.0));
         let (all, kept): (f64, f64) =
             (w.rows().iter().map(|r| r[1]).sum(), t.rows().iter().map(|r| r[1]).sum());
         assert!((all - kept).abs() < 1e-12, "nothing lost");
