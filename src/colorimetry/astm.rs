@@ -265,8 +265,10 @@ mod tests {
             Weights::from_rows(400.0, 10, vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]).unwrap();
         let ramp = crate::spectrum::FnSpectrum(|lambda: f64| lambda);
         assert_eq!(diagonal.xyz(&ramp), Xyz::new(400.0, 410.0, 420.0));
-        let (all, kept): (f64, f64) =
-            (w.rows().iter().map(|r| r[1]).sum(), t.rows().iter().map(|r| r[1]).sum());
-        assert!((all - kept).abs() < 1e-12, "nothing lost");
+        for c in 0..3 {
+            let (all, kept): (f64, f64) =
+                (w.rows().iter().map(|r| r[c]).sum(), t.rows().iter().map(|r| r[c]).sum());
+            assert!((all - kept).abs() < 1e-12, "nothing lost in channel {c}");
+        }
     }
 }
