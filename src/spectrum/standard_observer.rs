@@ -92,10 +92,6 @@ impl StandardObserver {
     /// The 1 nm table, `None` for the assignment's cubic.
     #[must_use]
     pub fn table(self) -> Option<Table> {
-        self.uniform()
-    }
-
-    fn uniform(self) -> Option<Table> {
         match self {
             StandardObserver::Cie1931 => {
                 Some((tables::CIE_1931_2_FIRST, tables::CIE_1931_2_STEP, &tables::CIE_1931_2))
@@ -121,7 +117,7 @@ impl StandardObserver {
     /// `[x̄, ȳ, z̄]` at `lambda` nm; zero outside the data (and at NaN).
     #[must_use]
     pub fn xyz_bar(self, lambda: f64) -> [f64; 3] {
-        match self.uniform() {
+        match self.table() {
             Some(table) => lerp(table, lambda),
             None => observer::xyz_bar(lambda),
         }
@@ -149,7 +145,7 @@ impl StandardObserver {
     /// lines between the nanometres, or the assignment's clamped cubic).
     pub fn integrals(self, range: WavelengthRange) -> Result<[f64; 3], Error> {
         let range = self.check(range)?;
-        Ok(match self.uniform() {
+        Ok(match self.table() {
             Some(table) => integrate(table, range),
             None => [&X_BAR, &Y_BAR, &Z_BAR].map(|s| s.integral(range.min(), range.max())),
         })
