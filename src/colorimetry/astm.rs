@@ -15,17 +15,20 @@
 //! ```
 //! use speclab::colorimetry::astm::Weights;
 //! use speclab::data::lights;
-//! use speclab::spectrum::StandardObserver;
-//! let w = Weights::e2022(&lights::CIE_D65, StandardObserver::Cie1931, 20)?;
+//! use speclab::colorimetry::Tristimulus;
+//! let w = Weights::e2022(&lights::CIE_D65, Tristimulus::CIE_1931.with_step(20.0)?)?;
 //! assert_eq!((w.first(), w.step(), w.rows().len()), (360.0, 20.0, 24));
 //! let y: f64 = w.rows().iter().map(|r| r[1]).sum();
 //! assert!((y - 100.0).abs() < 1e-12);
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+use super::Tristimulus;
 use crate::color::Xyz;
 use crate::error::Error;
-use crate::spectrum::{Spectrum, StandardObserver, WavelengthRange};
+#[cfg(test)]
+use crate::spectrum::StandardObserver;
+use crate::spectrum::{Spectrum, WavelengthRange};
 
 /// The largest step, nm.
 pub const MAX_STEP: usize = 20;
@@ -39,35 +42,27 @@ pub struct Weights {
 }
 
 impl Weights {
-    /// ASTM E2022's weights for `light` and `observer` (a 1 nm table)
-    /// every `step` nm (1 to [`MAX_STEP`]) from 360 nm, scaled so that
-    /// `Σ W_y = 100`. The light is read at every nanometre of 360–830 nm
-    /// as it is (a table stopping at 780 nm is zero beyond: hold its end
-    /// with `io::Extend::Hold` if the ASTM's practice is wanted).
-    pub fn e2022(
-        light: &(impl Spectrum + ?Sized),
-        observer: StandardObserver,
-        step: usize,
-    ) -> Result<Self, Error> {
-        Self::e2022_with(light, observer, step, None)
+    /// ASTM E2022's weights for `light` on `grid`: its observer's 1 nm
+    /// table summed over its range, a weight every `grid.step()` nm (a
+    /// whole number, 1 to [`MAX_STEP`]) from the range's start (a whole
+    /// nanometre), scaled so that `Σ W_y = 100`. The light is read at
+    /// every nanometre of the range as it is (a table stopping at 780 nm is
+    /// zero beyond: hold its end with `io::Extend::Hold` for the ASTM's
+    /// practice).
+    pub fn e2022(light: &(impl Spectrum + ?Sized), grid: Tristimulus) -> Result<Self, Error> {
+        let mut w = Self::e2022_unscaled(light, grid)?;
+        let k = 100.0 / w.rows.iter().map(|r| r[1]).sum::<f64>();
+        if !k.is_finite() {
+            return Err(Error::Dark { range: [grid.range().min(), grid.range().max()] });
+        }
+        w.rows.iter_mut().for_each(|r| *r = r.map(|v| v * k));
+        Ok(w)
     }
 
-    /// [`Weights::e2022`] scaled by `k` instead (`k = 1`: not normalised).
-    pub fn e2022_scaled(
-        light: &(impl Spectrum + ?Sized),
-        observer: StandardObserver,
-        step: usize,
-        k: f64,
-    ) -> Result<Self, Error> {
-        Self::e2022_with(light, observer, step, Some(k))
-    }
-
-    fn e2022_with(
-        light: &(impl Spectrum + ?Sized),
-        observer: StandardObserver,
-        step: usize,
-        k: Option<f64>,
-    ) -> Result<Self, Error> {
+    /// [`Weights::e2022`] not normalised (`k = 1`): `Σ W_y` is the light's
+    /// `Σ S·ȳ` over the range, nm.
+    pub fn e2022_unscaled(light: &(impl Spectrum + ?Sized), grid: Tristimulus) -> Result<Self, Error> {
+        let observer = grid.observer();
         let Some((first, 1.0, cmf)) = observer.table() else {
             return Err(Error::UnknownName {
                 what: "an observer with a 1 nm table",
@@ -75,20 +70,23 @@ impl Weights {
                 found: observer.name().to_string(),
             });
         };
-        if !(1..=MAX_STEP).contains(&step) {
-            return Err(Error::Step { step: step as f64, width: MAX_STEP as f64 });
+        let step = grid.step();
+        if !(step.fract() == 0.0 && (1.0..=MAX_STEP as f64).contains(&step)) {
+            return Err(Error::Step { step, width: MAX_STEP as f64 });
         }
-        let sc: Vec<[f64; 3]> =
-            cmf.iter().enumerate().map(|(i, c)| c.map(|v| v * light.eval(first + i as f64))).collect();
-        let mut rows = lagrange_weights(&sc, step);
-        let k = k.unwrap_or_else(|| 100.0 / rows.iter().map(|r| r[1]).sum::<f64>());
-        if !k.is_finite() {
-            return Err(Error::Dark {
-                range: [WavelengthRange::VISIBLE.min(), WavelengthRange::VISIBLE.max()],
+        let (lo, hi) = (grid.range().min() - first, grid.range().max() - first);
+        if lo.fract() != 0.0 || (hi - lo) < 2.0 * step {
+            return Err(Error::RangeOutside {
+                range: [grid.range().min(), grid.range().max()],
+                of: "a weighting table (whole nanometres, three steps at least)",
+                data: [first, first + (cmf.len() - 1) as f64],
             });
         }
-        rows.iter_mut().for_each(|r| *r = r.map(|v| v * k));
-        Ok(Weights { first, step, rows })
+        let rows = &cmf[lo as usize..=hi.floor() as usize];
+        let min = grid.range().min();
+        let sc: Vec<[f64; 3]> =
+            rows.iter().enumerate().map(|(i, c)| c.map(|v| v * light.eval(min + i as f64))).collect();
+        Ok(Weights { first: min, step: step as usize, rows: lagrange_weights(&sc, step as usize) })
     }
 
     /// A table of one's own (a published one): `rows` at `first + i·step`
@@ -224,12 +222,13 @@ mod tests {
 
     #[test]
     fn one_nanometre_weights_are_the_table() {
-        let w = Weights::e2022_scaled(&Constant::new(1.0), StandardObserver::Cie1931, 1, 1.0).unwrap();
+        let w = Weights::e2022_unscaled(&Constant::new(1.0), Tristimulus::CIE_1931).unwrap();
         let (_, _, rows) = StandardObserver::Cie1931.table().unwrap();
         assert_eq!(w.rows(), rows);
         // Any step: a constant reflectance sums to the white, Y = 100.
-        for step in [2, 5, 10, 20] {
-            let w = Weights::e2022(&Constant::new(1.0), StandardObserver::Cie1964, step).unwrap();
+        for step in [2.0, 5.0, 10.0, 20.0] {
+            let w =
+                Weights::e2022(&Constant::new(1.0), Tristimulus::CIE_1964.with_step(step).unwrap()).unwrap();
             assert!((w.xyz(&Constant::new(0.5)).y - 50.0).abs() < 1e-12, "{step}");
         }
     }
@@ -237,16 +236,19 @@ mod tests {
     #[test]
     fn bad_steps_observers_and_ranges() {
         let e = Constant::new(1.0);
-        for step in [0, 21] {
-            assert!(matches!(Weights::e2022(&e, StandardObserver::Cie1931, step), Err(Error::Step { .. })));
+        for step in [21.0, 2.5] {
+            let grid = Tristimulus::CIE_1931.with_step(step).unwrap();
+            assert!(matches!(Weights::e2022(&e, grid), Err(Error::Step { .. })), "{step}");
         }
-        let a = Weights::e2022(&e, StandardObserver::Assignment, 10).unwrap_err().to_string();
+        let assignment =
+            Tristimulus::new(StandardObserver::Assignment, WavelengthRange::ASSIGNMENT, 10.0).unwrap();
+        let a = Weights::e2022(&e, assignment).unwrap_err().to_string();
         assert!(a.contains("an observer with a 1 nm table"), "{a}");
         assert!(matches!(
-            Weights::e2022(&Constant::new(0.0), StandardObserver::Cie1931, 10),
+            Weights::e2022(&Constant::new(0.0), Tristimulus::CIE_1931.with_step(10.0).unwrap()),
             Err(Error::Dark { .. })
         ));
-        let w = Weights::e2022(&e, StandardObserver::Cie1931, 20).unwrap();
+        let w = Weights::e2022(&e, Tristimulus::CIE_1931.with_step(20.0).unwrap()).unwrap();
         for (a, b) in [(410.0, 700.0), (400.0, 710.0), (340.0, 700.0), (400.0, 840.0)] {
             let e = w.trimmed(WavelengthRange::new(a, b).unwrap()).unwrap_err().to_string();
             let expected =
@@ -270,5 +272,22 @@ mod tests {
                 (w.rows().iter().map(|r| r[c]).sum(), t.rows().iter().map(|r| r[c]).sum());
             assert!((all - kept).abs() < 1e-12, "nothing lost in channel {c}");
         }
+    }
+
+    #[test]
+    fn weights_over_a_range_of_whole_nanometres() {
+        let e = Constant::new(1.0);
+        let r = |a, b| WavelengthRange::new(a, b).unwrap();
+        let grid = |a, b, step| Tristimulus::new(StandardObserver::Cie1931, r(a, b), step).unwrap();
+        let w = Weights::e2022_unscaled(&e, grid(400.0, 700.0, 1.0)).unwrap();
+        let (_, _, rows) = StandardObserver::Cie1931.table().unwrap();
+        assert_eq!((w.first(), w.rows()), (400.0, &rows[40..=340]));
+        let ten = Weights::e2022(&e, grid(360.0, 780.0, 10.0)).unwrap();
+        assert_eq!((ten.first(), ten.step(), ten.rows().len()), (360.0, 10.0, 43));
+        for (a, b, step) in [(400.5, 700.0, 10.0), (400.0, 419.0, 10.0)] {
+            let e = Weights::e2022(&e, grid(a, b, step)).unwrap_err().to_string();
+            assert!(e.contains("whole nanometres, three steps at least"), "{e}");
+        }
+        assert_eq!(Weights::e2022(&e, grid(400.0, 420.0, 10.0)).unwrap().rows().len(), 3);
     }
 }

@@ -6,7 +6,11 @@
 //!   (observer, range, step), absolute or relative (`Y = 100` for the
 //!   perfect white under the light).
 //! - [`astm`]: ASTM E308 weighting tables (E2022's construction) for any
-//!   light, every 1 to 20 nm, and their adjustment to a measured range.
+//!   light, every 1 to 20 nm, over any range of whole nanometres, and
+//!   their adjustment to a measured range.
+//! - [`e308`]: ASTM E308's practice for a reflectance measured every 1,
+//!   5, 10 or 20 nm (given as a [`crate::spectrum::Sprague`] interpolant,
+//!   the CIE's recommended interpolation of 5 nm tables).
 //! - [`cct`]: the Planckian locus ([`cct::Planckian`]), CIE 1960 `u, v`,
 //!   and `(T, Duv)` of a chromaticity by Ohno 2013, both ways.
 //! - Around them, on the floors below: the observers and ranges
@@ -33,6 +37,7 @@
 
 pub mod astm;
 pub mod cct;
+pub mod e308;
 mod tristimulus;
 
 pub use tristimulus::Tristimulus;

@@ -50,6 +50,16 @@ impl Tristimulus {
         Ok(Tristimulus { observer, range, step })
     }
 
+    /// The same sums at `step` nm; an error as [`Tristimulus::new`]'s.
+    pub fn with_step(self, step: f64) -> Result<Self, Error> {
+        Tristimulus::new(self.observer, self.range, step)
+    }
+
+    /// The same sums over `range`, checked as [`Tristimulus::new`] checks.
+    pub fn over(self, range: WavelengthRange) -> Result<Self, Error> {
+        Tristimulus::new(self.observer, range, self.step)
+    }
+
     /// The same sums over `range` (for constants; the caller checks it
     /// against the observer's data).
     pub(crate) const fn with_range(self, range: WavelengthRange) -> Self {

@@ -207,8 +207,8 @@ pub trait Spectrum {
         None
     }
 
-    /// The largest value the spectrum takes between 380 and 730 nm (the
-    /// range every sampler draws from), or a bound above it, as pbrt-v4's
+    /// The largest value the spectrum takes between 360 and 830 nm (the
+    /// widest range a sampler draws from), or a bound above it, as pbrt-v4's
     /// `MaxValue`, for sampling and clamping: exact for tables (the
     /// interpolant's maximum, not only the samples'), dense tables,
     /// constants, blackbodies and sigmoid polynomials; a bound for

@@ -60,6 +60,7 @@ mod sampled;
 pub(crate) mod scaled;
 pub(crate) mod sigmoid;
 pub(crate) mod simd;
+mod sprague;
 mod standard_observer;
 mod tabulated;
 pub(crate) mod weights;
@@ -83,6 +84,7 @@ pub use range::WavelengthRange;
 pub use sampled::{SampledSpectrum, Wavelengths};
 pub use scaled::Scaled;
 pub use sigmoid::{SigmoidPolynomial, sigmoid, sigmoid_f32};
+pub use sprague::Sprague;
 pub use standard_observer::{StandardObserver, Table as ObserverTable};
 #[doc(hidden)]
 pub use tabulated::Tables;

@@ -190,9 +190,10 @@ fn planck_law() {
 /// `reshape_sd`). The three-decimal tables are ASTM E308-15's, colour notes.
 #[test]
 fn astm_e308_weighting_tables() {
+    use speclab::colorimetry::Tristimulus;
     use speclab::colorimetry::astm::Weights;
     use speclab::data::lights;
-    use speclab::spectrum::{FnSpectrum, StandardObserver, WavelengthRange};
+    use speclab::spectrum::{FnSpectrum, WavelengthRange};
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/astm_e308_weights.csv");
     let text = std::fs::read_to_string(path).expect("test data");
     let table = |name: &str| -> Vec<[f64; 3]> {
@@ -215,12 +216,21 @@ fn astm_e308_weighting_tables() {
             close(&row.map(|v| (v * 1000.0).round() / 1000.0), e, TOLERANCE, what);
         }
     };
-    let (o1931, o1964) = (StandardObserver::Cie1931, StandardObserver::Cie1964);
-    three_decimals(&Weights::e2022(&a, o1964, 10).unwrap(), &table("TWF_A_CIE_1964_10_10"), "A, 10°, 10 nm");
-    three_decimals(&Weights::e2022(&a, o1964, 20).unwrap(), &table("TWF_A_CIE_1964_10_20"), "A, 10°, 20 nm");
-    let w = Weights::e2022(&d65, o1931, 20).unwrap();
+    let (o1931, o1964) = (Tristimulus::CIE_1931, Tristimulus::CIE_1964);
+    let every = |t: Tristimulus, step| t.with_step(step).unwrap();
+    three_decimals(
+        &Weights::e2022(&a, every(o1964, 10.0)).unwrap(),
+        &table("TWF_A_CIE_1964_10_10"),
+        "A, 10°, 10 nm",
+    );
+    three_decimals(
+        &Weights::e2022(&a, every(o1964, 20.0)).unwrap(),
+        &table("TWF_A_CIE_1964_10_20"),
+        "A, 10°, 20 nm",
+    );
+    let w = Weights::e2022(&d65, every(o1931, 20.0)).unwrap();
     three_decimals(&w, &table("TWF_D65_CIE_1931_2_20"), "D65, 2°, 20 nm");
-    let k1 = Weights::e2022_scaled(&d65, o1931, 20, 1.0).unwrap();
+    let k1 = Weights::e2022_unscaled(&d65, every(o1931, 20.0)).unwrap();
     for (row, e) in k1.rows().iter().zip(table("TWF_D65_CIE_1931_2_20_K1")) {
         close(row, &e, TOLERANCE, "D65, 2°, 20 nm, k = 1");
     }

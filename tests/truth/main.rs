@@ -6,6 +6,7 @@
 mod appendix2;
 mod ciede2000;
 mod colour_science;
+mod colour_tristimulus;
 mod data;
 mod named;
 mod peers;
