@@ -1,7 +1,7 @@
 //! Equidistant wavelength buckets: the one definition of the two rules.
 //!
-//! The range 380–730 nm (width W = 350 nm) is cut into M equal buckets;
-//! bucket i spans `[380 + i·W/M, 380 + (i+1)·W/M]`. A [`BucketRule`] turns
+//! A range, 380–730 nm by default (width W = 350 nm), is cut into M equal
+//! buckets; bucket i spans `[min + i·W/M, min + (i+1)·W/M]`. A [`BucketRule`] turns
 //! a spectrum into M numbers:
 //!
 //! - [`BucketRule::Center`]: the value at each bucket center;
@@ -28,11 +28,12 @@
 //! ```
 
 use crate::named_choices;
+use crate::spectrum::data::observers;
 use crate::spectrum::data::{
     CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,
     CIE_Z_COEFFS, CIE_Z_LAMBDA,
 };
-use crate::spectrum::{LAMBDA_MIN, LAMBDA_WIDTH, Role, Spectrum, integrate, interp};
+use crate::spectrum::{Role, Spectrum, StandardObserver, WavelengthRange, integrate, interp};
 
 /// How a spectrum becomes bucket values.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -46,16 +47,22 @@ pub enum BucketRule {
 
 named_choices!(BucketRule, "a bucket rule": Center => "center", BoxAverage => "box");
 
-/// The lower edge of bucket `i` of `m`, nm (`edge(m, m)` is 730 nm).
-#[inline]
-pub(crate) const fn edge(i: usize, m: usize) -> f64 {
-    LAMBDA_MIN + i as f64 * LAMBDA_WIDTH / m as f64
-}
-
 /// The center of bucket `i` of `m`, nm.
 #[inline]
 pub(crate) const fn center(i: usize, m: usize) -> f64 {
-    0.5 * (edge(i, m) + edge(i + 1, m))
+    center_in(WavelengthRange::ASSIGNMENT, i, m)
+}
+
+/// The lower edge of bucket `i` of `m` over `range`, nm.
+#[inline]
+pub(crate) const fn edge_in(range: WavelengthRange, i: usize, m: usize) -> f64 {
+    range.min() + i as f64 * range.width() / m as f64
+}
+
+/// The center of bucket `i` of `m` over `range`, nm.
+#[inline]
+pub(crate) const fn center_in(range: WavelengthRange, i: usize, m: usize) -> f64 {
+    0.5 * (edge_in(range, i, m) + edge_in(range, i + 1, m))
 }
 
 const CMF_BOUNDS: [f64; 2] = Role::Observer.bounds();
@@ -67,23 +74,37 @@ impl BucketRule {
     /// `RegularSpectrum<M, B>` has them at compile time.
     #[must_use]
     pub const fn observer(self, i: usize, m: usize) -> [f64; 3] {
-        match self {
-            BucketRule::Center => {
-                let lambda = center(i, m);
+        self.observer_over(StandardObserver::Assignment, WavelengthRange::ASSIGNMENT, i, m)
+    }
+
+    /// [`BucketRule::observer`] for buckets over `range` with `observer`
+    /// (the CIE's 1 nm tables are linear between nanometres, zero outside
+    /// 360–830 nm).
+    #[must_use]
+    pub const fn observer_over(
+        self,
+        observer: StandardObserver,
+        range: WavelengthRange,
+        i: usize,
+        m: usize,
+    ) -> [f64; 3] {
+        let (a, b) = (edge_in(range, i, m), edge_in(range, i + 1, m));
+        match (observer, self) {
+            (StandardObserver::Cie1931, rule) => table_bucket(&observers::CIE_1931_2, rule, a, b),
+            (StandardObserver::Cie1964, rule) => table_bucket(&observers::CIE_1964_10, rule, a, b),
+            (StandardObserver::Assignment, BucketRule::Center) => {
+                let lambda = 0.5 * (a + b);
                 [
                     interp::eval(&CIE_X_LAMBDA, &CIE_X_COEFFS, CMF_BOUNDS, lambda),
                     interp::eval(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, CMF_BOUNDS, lambda),
                     interp::eval(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, CMF_BOUNDS, lambda),
                 ]
             }
-            BucketRule::BoxAverage => {
-                let (a, b) = (edge(i, m), edge(i + 1, m));
-                [
-                    interp::integral(&CIE_X_LAMBDA, &CIE_X_COEFFS, &CIE_X_BREAKS, CMF_BOUNDS, a, b) / (b - a),
-                    interp::integral(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, &CIE_Y_BREAKS, CMF_BOUNDS, a, b) / (b - a),
-                    interp::integral(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, &CIE_Z_BREAKS, CMF_BOUNDS, a, b) / (b - a),
-                ]
-            }
+            (StandardObserver::Assignment, BucketRule::BoxAverage) => [
+                interp::integral(&CIE_X_LAMBDA, &CIE_X_COEFFS, &CIE_X_BREAKS, CMF_BOUNDS, a, b) / (b - a),
+                interp::integral(&CIE_Y_LAMBDA, &CIE_Y_COEFFS, &CIE_Y_BREAKS, CMF_BOUNDS, a, b) / (b - a),
+                interp::integral(&CIE_Z_LAMBDA, &CIE_Z_COEFFS, &CIE_Z_BREAKS, CMF_BOUNDS, a, b) / (b - a),
+            ],
         }
     }
 
@@ -101,23 +122,79 @@ impl BucketRule {
     }
 }
 
-/// The exact means of `s` over each of `out.len()` buckets: differences of
-/// the spectrum's running integral at the edges where it has one at hand
-/// (a table's: O(1) per edge), otherwise each bucket's integral piece by
-/// piece (exact for a piecewise polynomial, else by quadrature).
+/// The exact means of `s` over each of `out.len()` buckets of 380–730 nm.
 #[inline]
 pub(crate) fn box_means<S: Spectrum + ?Sized>(s: &S, out: &mut [f64]) {
+    box_means_in(s, WavelengthRange::ASSIGNMENT, out);
+}
+
+/// The exact means of `s` over each of `out.len()` buckets of `range`:
+/// differences of the spectrum's running integral at the edges where it
+/// has one at hand (a table's: O(1) per edge), otherwise each bucket's
+/// integral piece by piece (exact for a piecewise polynomial, else by
+/// quadrature).
+#[inline]
+pub(crate) fn box_means_in<S: Spectrum + ?Sized>(s: &S, range: WavelengthRange, out: &mut [f64]) {
     let m = out.len();
-    let inv_width = m as f64 / LAMBDA_WIDTH;
-    if let Some(mut below) = s.running_integral(edge(0, m)) {
+    let inv_width = m as f64 / range.width();
+    let edge = |i| edge_in(range, i, m);
+    if let Some(mut below) = s.running_integral(edge(0)) {
         for (i, v) in out.iter_mut().enumerate() {
-            let above = s.running_integral(edge(i + 1, m)).unwrap_or(below);
+            let above = s.running_integral(edge(i + 1)).unwrap_or(below);
             *v = (above - below) * inv_width;
             below = above;
         }
         return;
     }
     for (i, v) in out.iter_mut().enumerate() {
-        *v = integrate::integral(&s, edge(i, m), edge(i + 1, m)) * inv_width;
+        *v = integrate::integral(&s, edge(i), edge(i + 1)) * inv_width;
     }
 }
+
+/// A 1 nm table from 360 nm read as lines (zero outside): its value at
+/// the center of `[a, b]`, or its mean over it.
+const fn table_bucket<const N: usize>(table: &[[f64; 3]; N], rule: BucketRule, a: f64, b: f64) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    let mut c = 0;
+    while c < 3 {
+        out[c] = match rule {
+            BucketRule::Center => line_value(table, c, 0.5 * (a + b)),
+            BucketRule::BoxAverage => (line_integral(table, c, b) - line_integral(table, c, a)) / (b - a),
+        };
+        c += 1;
+    }
+    out
+}
+
+/// Channel `c` of the table at `lambda` nm.
+const fn line_value<const N: usize>(table: &[[f64; 3]; N], c: usize, lambda: f64) -> f64 {
+    let x = lambda - TABLE_FIRST;
+    if !(x >= 0.0 && x <= (N - 1) as f64) {
+        return 0.0;
+    }
+    let j = if x as usize >= N - 1 { N - 2 } else { x as usize };
+    let t = x - j as f64;
+    table[j][c] + t * (table[j + 1][c] - table[j][c])
+}
+
+/// The integral of channel `c` of the table from its start to `lambda` nm.
+const fn line_integral<const N: usize>(table: &[[f64; 3]; N], c: usize, lambda: f64) -> f64 {
+    let x = lambda - TABLE_FIRST;
+    if x.is_nan() || x <= 0.0 {
+        return 0.0;
+    }
+    let x = if x > (N - 1) as f64 { (N - 1) as f64 } else { x };
+    let j = if x as usize >= N - 1 { N - 2 } else { x as usize };
+    let mut sum = 0.0;
+    let mut k = 0;
+    while k < j {
+        sum += 0.5 * (table[k][c] + table[k + 1][c]);
+        k += 1;
+    }
+    let t = x - j as f64;
+    sum + t * table[j][c] + 0.5 * t * t * (table[j + 1][c] - table[j][c])
+}
+
+/// Where the CIE's 1 nm tables start, nm.
+const TABLE_FIRST: f64 = observers::CIE_1931_2_FIRST;
+const _: () = assert!(observers::CIE_1964_10_FIRST == TABLE_FIRST);

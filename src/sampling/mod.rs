@@ -87,6 +87,6 @@ mod widths;
 
 pub use hero::HeroSample;
 pub use prepared::PreparedLight;
-pub use regular::{BoxAverage, Center, RegularSpectrum};
+pub use regular::{AssignmentBand, Band, BoxAverage, Center, RegularSpectrum, VisibleBand};
 pub use wavelengths::{Emission, FixedWavelengths};
 pub use widths::{AtWidth, with_lanes};
