@@ -256,7 +256,7 @@ impl fmt::Display for Error {
             }
             Error::RuleEntry { index, lambda } => write!(
                 f,
-                "rule wavelength {index}: expected a wavelength in 380–730 nm with a finite weight in each of X, Y and Z, found {lambda} nm"
+                "rule wavelength {index}: expected a wavelength in 360–830 nm with a finite weight in each of X, Y and Z, found {lambda} nm"
             ),
             Error::RuleShape { row, len, expected } => {
                 let name = ["X", "Y", "Z"].get(*row).copied().unwrap_or("?");

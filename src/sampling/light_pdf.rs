@@ -23,7 +23,7 @@
 
 use crate::spectrum::interp::{self, Coeffs};
 use crate::spectrum::piecewise::View;
-use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN, Samples, Spectrum, observer};
+use crate::spectrum::{Interpolation, Role, Samples, Spectrum, StandardObserver, WavelengthRange, observer};
 
 /// A spectrum's samples with their interpolant's polynomials and breaks,
 /// computed as a `TabulatedSpectrum` computes them.
@@ -65,10 +65,44 @@ pub(crate) struct PiecewisePdf {
 impl PiecewisePdf {
     /// The density ∝ `light·Σ alpha꜀·c̄꜀` (∝ `light` alone for `None`), or
     /// `None` if it integrates to zero (or to something not finite) over
-    /// 380–730 nm.
+    /// 380–730 nm, with the assignment's observer.
     pub(crate) fn new(light: &dyn Spectrum, alpha: Option<[f64; 3]>) -> Option<Self> {
-        let cmf = observer::views();
-        let (a, b) = (LAMBDA_MIN, LAMBDA_MAX);
+        Self::new_in(light, alpha, StandardObserver::Assignment, WavelengthRange::ASSIGNMENT)
+    }
+
+    /// [`PiecewisePdf::new`] over `range` with `observer` (a CIE 1 nm
+    /// table: lines between nanometres, so a piece per nanometre).
+    pub(crate) fn new_in(
+        light: &dyn Spectrum,
+        alpha: Option<[f64; 3]>,
+        observer: StandardObserver,
+        range: WavelengthRange,
+    ) -> Option<Self> {
+        match observer.table() {
+            None => Self::with_cmfs(light, alpha, observer::views(), range),
+            Some((first, step, rows)) => {
+                let lambda: Vec<f64> = (0..rows.len()).map(|i| first + step * i as f64).collect();
+                let values: [Vec<f64>; 3] = std::array::from_fn(|c| rows.iter().map(|r| r[c]).collect());
+                let tables: [Table<'_>; 3] = std::array::from_fn(|c| {
+                    Table::of(Samples {
+                        lambda: &lambda,
+                        values: &values[c],
+                        interpolation: Interpolation::Linear,
+                        role: Role::Observer,
+                    })
+                });
+                Self::with_cmfs(light, alpha, tables.each_ref().map(Table::view), range)
+            }
+        }
+    }
+
+    fn with_cmfs(
+        light: &dyn Spectrum,
+        alpha: Option<[f64; 3]>,
+        cmf: [View<'_>; 3],
+        range: WavelengthRange,
+    ) -> Option<Self> {
+        let (a, b) = (range.min(), range.max());
         let pieces = light.pieces();
         let mut ends: Vec<f64> = cmf.iter().flat_map(|v| v.breaks.iter().copied()).chain([a, b]).collect();
         if let Some(p) = &pieces {

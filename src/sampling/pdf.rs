@@ -54,7 +54,7 @@ pub use crate::sampling::density::WavelengthPdf;
 use crate::sampling::density::reciprocal;
 use crate::sampling::light_pdf::PiecewisePdf;
 use crate::sampling::reference;
-use crate::spectrum::Spectrum;
+use crate::spectrum::{Spectrum, StandardObserver, WavelengthRange};
 
 /// A density that follows a light, or any spectrum: `∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)`,
 /// tabulated exactly (see `light_pdf.rs`) when the pdf is made (about 7 µs
@@ -87,6 +87,39 @@ impl LightPdf {
     pub fn weighted(spectrum: &impl Spectrum, alpha: [f64; 3]) -> Result<Self, Error> {
         let alpha = alpha.map(|a| if a.is_finite() && a > 0.0 { a } else { 0.0 });
         PiecewisePdf::new(spectrum, Some(alpha)).map(|table| LightPdf { table }).ok_or(Error::NoMass)
+    }
+
+    /// [`LightPdf::weighted`] over `range` with `observer` (a renderer's
+    /// 360–830 nm with the CIE 1931 observer, or any range within the
+    /// observer's data): an [`Error::RangeOutside`] beyond the data,
+    /// [`Error::NoMass`] as `weighted`'s.
+    ///
+    /// ```
+    /// use speclab::data::lights;
+    /// use speclab::sampling::pdf::{LightPdf, WavelengthPdf};
+    /// use speclab::spectrum::{StandardObserver, WavelengthRange};
+    /// let d65 = LightPdf::weighted_in(&lights::CIE_D65, [1.0; 3], StandardObserver::Cie1931, WavelengthRange::VISIBLE)?;
+    /// assert!(d65.pdf(370.0) > 0.0 && d65.pdf(800.0) > 0.0 && d65.pdf(850.0) == 0.0);
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    pub fn weighted_in(
+        spectrum: &impl Spectrum,
+        alpha: [f64; 3],
+        observer: StandardObserver,
+        range: WavelengthRange,
+    ) -> Result<Self, Error> {
+        let range = observer.check(range)?;
+        let alpha = alpha.map(|a| if a.is_finite() && a > 0.0 { a } else { 0.0 });
+        PiecewisePdf::new_in(spectrum, Some(alpha), observer, range)
+            .map(|table| LightPdf { table })
+            .ok_or(Error::NoMass)
+    }
+
+    /// [`LightPdf::spectrum`] over `range`: `p ∝ S(λ)` there.
+    pub fn spectrum_in(spectrum: &impl Spectrum, range: WavelengthRange) -> Result<Self, Error> {
+        PiecewisePdf::new_in(spectrum, None, StandardObserver::Assignment, range)
+            .map(|table| LightPdf { table })
+            .ok_or(Error::NoMass)
     }
 
     /// `p ∝ S(λ)` over 380–730 nm: a density proportional to a spectrum

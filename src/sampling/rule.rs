@@ -32,7 +32,7 @@ use crate::error::Error;
 use crate::sampling::buckets::{BucketRule, center};
 use crate::sampling::wavelengths::{FixedWavelengths, Weighted};
 use crate::spectrum::simd::column_sums;
-use crate::spectrum::{Float, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum};
+use crate::spectrum::{Float, LAMBDA_WIDTH, Spectrum, WavelengthRange};
 
 /// The most wavelengths a rule takes (buckets, fitted and given rules alike).
 pub const MAX_M: usize = 64;
@@ -76,7 +76,7 @@ impl Rule {
     /// (nm, one per wavelength each; XYZ꜀ = `Σᵢ w꜀ᵢ·vᵢ`), sorted by
     /// wavelength. An [`Error::Count`] unless `1 ≤ M ≤` [`MAX_M`]; an
     /// [`Error::RuleShape`] for a row of another length; an
-    /// [`Error::RuleEntry`] for a wavelength outside 380–730 nm or a weight
+    /// [`Error::RuleEntry`] for a wavelength outside 360–830 nm or a weight
     /// that is not finite.
     ///
     /// ```
@@ -87,7 +87,7 @@ impl Rule {
     /// let y = reference::white(&lights::E).y;
     /// let rule = Rule::new(vec![555.0], [vec![0.0], vec![y], vec![0.0]])?;
     /// assert_eq!(rule.xyz_of_product(&[&patches::A1]).y, y * patches::A1.eval(555.0));
-    /// assert!(Rule::new(vec![800.0], [vec![1.0], vec![1.0], vec![1.0]]).is_err());
+    /// assert!(Rule::new(vec![900.0], [vec![1.0], vec![1.0], vec![1.0]]).is_err());
     /// # Ok::<(), speclab::Error>(())
     /// ```
     pub fn new(lambda: Vec<f64>, weights: [Vec<f64>; 3]) -> Result<Rule, Error> {
@@ -97,7 +97,7 @@ impl Rule {
             return Err(Error::RuleShape { row, len: weights[row].len(), expected: m });
         }
         let valid = |i: usize| {
-            (LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda[i]) && weights.iter().all(|r| r[i].is_finite())
+            WavelengthRange::VISIBLE.contains(lambda[i]) && weights.iter().all(|r| r[i].is_finite())
         };
         if let Some(i) = (0..m).find(|&i| !valid(i)) {
             return Err(Error::RuleEntry { index: i, lambda: lambda[i] });
@@ -268,8 +268,8 @@ mod tests {
             Err(Error::RuleEntry { index, lambda }) => Some((index, lambda)),
             _ => None,
         };
-        assert_eq!(entry(Rule::new(vec![500.0, 731.0], rows([1.0, 1.0]))), Some((1, 731.0)));
-        assert_eq!(entry(Rule::new(vec![379.0, 500.0], rows([1.0, 1.0]))), Some((0, 379.0)));
+        assert_eq!(entry(Rule::new(vec![500.0, 831.0], rows([1.0, 1.0]))), Some((1, 831.0)));
+        assert_eq!(entry(Rule::new(vec![359.0, 500.0], rows([1.0, 1.0]))), Some((0, 359.0)));
         assert_eq!(entry(Rule::new(vec![500.0, 600.0], rows([1.0, f64::NAN]))), Some((1, 600.0)));
         assert_eq!(entry(Rule::new(vec![500.0, 600.0], rows([f64::INFINITY, 1.0]))), Some((0, 500.0)));
         let short = Rule::new(vec![500.0, 600.0], [vec![1.0; 2], vec![1.0], vec![1.0; 2]]);
@@ -279,7 +279,7 @@ mod tests {
         let shape = Error::RuleShape { row: 1, len: 1, expected: 2 }.to_string();
         assert_eq!(shape, "rule weights for Y: expected 2 (one per wavelength), found 1");
         assert!(matches!(Rule::new(Vec::new(), Default::default()), Err(Error::Count { found: 0, .. })));
-        let edges = Rule::new(vec![LAMBDA_MIN, LAMBDA_MAX], rows([1.0, 1.0])).unwrap();
+        let edges = Rule::new(vec![360.0, 830.0], rows([1.0, 1.0])).unwrap();
         assert_eq!(edges.m(), 2);
         assert!(Error::RuleEntry { index: 1, lambda: 731.0 }.to_string().contains("rule wavelength 1"));
     }

@@ -17,6 +17,7 @@ mod regular;
 mod rgb_table;
 mod spectra;
 mod upsample;
+mod visible;
 
 /// The mean XYZ of `n` hero samples of `light × surface`, wavelengths
 /// uniform and independent from `rng`, weighted by the exact observer (the

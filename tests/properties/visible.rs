@@ -1,0 +1,98 @@
+//! The sampled paths over 360–830 nm with the CIE 1931 observer, against
+//! the exact reference over the same range: a light's pdf (exact values,
+//! integral 1, unbiased estimates in units of their standard error),
+//! regular buckets, and rules at wavelengths the assignment's range leaves
+//! out.
+
+use rand::rngs::StdRng;
+use rand::{RngExt, SeedableRng};
+use speclab::data::{lights, patches};
+use speclab::sampling::pdf::{LightPdf, WavelengthPdf};
+use speclab::sampling::{VisibleBand, reference, rule::Rule};
+use speclab::spectrum::{DenseObserver, DenseSpectrum, StandardObserver, WavelengthRange};
+use speclab::{BoxAverage, HeroSample, Spectrum, Xyz};
+
+const VISIBLE: WavelengthRange = WavelengthRange::VISIBLE;
+const CIE: StandardObserver = StandardObserver::Cie1931;
+
+fn exact(factors: &[&dyn Spectrum]) -> Xyz {
+    reference::xyz_over(CIE, VISIBLE, factors).expect("within the observer's data")
+}
+
+/// `p(λ) = L(λ)·(x̄ + ȳ + z̄)(λ) / ∫ L·(x̄ + ȳ + z̄)`, the integral by the
+/// exact reference (another path through the crate).
+#[test]
+fn a_lights_pdf_over_360_830_is_its_product_with_the_observer() {
+    let d65 = DenseSpectrum::new(&lights::CIE_D65);
+    let p = LightPdf::weighted_in(&d65, [1.0; 3], CIE, VISIBLE).expect("bright");
+    let total = exact(&[&d65]).to_array().iter().sum::<f64>();
+    for lambda in [360.0, 365.5, 400.25, 555.0, 700.0, 779.5, 805.0, 830.0] {
+        let want = d65.eval(lambda) * CIE.xyz_bar(lambda).iter().sum::<f64>() / total;
+        assert!((p.pdf(lambda) - want).abs() <= 1e-9 * want, "{lambda} nm: {} against {want}", p.pdf(lambda));
+    }
+    assert_eq!((p.pdf(359.9), p.pdf(830.1)), (0.0, 0.0));
+    assert_eq!((p.cdf(360.0), p.cdf(830.0).map(|c| (c - 1.0).abs() < 1e-14)), (Some(0.0), Some(true)));
+    let mut rng = StdRng::seed_from_u64(11);
+    for _ in 0..2000 {
+        let u = rng.random::<f64>();
+        let lambda = p.sample(u);
+        assert!(VISIBLE.contains(lambda) && (p.cdf(lambda).unwrap() - u).abs() < 1e-12);
+    }
+    let outside = LightPdf::weighted_in(&d65, [1.0; 3], CIE, WavelengthRange::new(300.0, 830.0).unwrap());
+    assert!(matches!(outside, Err(speclab::Error::RangeOutside { .. })));
+    let own = LightPdf::spectrum_in(&d65, VISIBLE).expect("bright");
+    assert!((own.pdf(805.0) / own.pdf(555.0) - d65.eval(805.0) / d65.eval(555.0)).abs() < 1e-12);
+}
+
+/// Hero estimates of D65 × G4 under the light's pdf over 360–830 nm: the
+/// mean of 4096 is within 4 standard errors of the exact value, per channel.
+#[test]
+fn hero_estimates_over_360_830_are_unbiased() {
+    let (d65, g4) = (DenseSpectrum::new(&lights::CIE_D65), DenseSpectrum::new(&patches::G4));
+    let p = LightPdf::weighted_in(&d65, [1.0; 3], CIE, VISIBLE).expect("bright");
+    let truth = exact(&[&d65, &g4]);
+    let (n, mut rng) = (4096, StdRng::seed_from_u64(5));
+    let estimates: Vec<[f64; 3]> = (0..n)
+        .map(|_| {
+            let h = HeroSample::<4>::from_pdf_with(rng.random::<f64>(), &p, &DenseObserver::CIE_1931);
+            h.to_xyz(d65.sample(&h) * g4.sample(&h)).to_array()
+        })
+        .collect();
+    for c in 0..3 {
+        let mean = estimates.iter().map(|e| e[c]).sum::<f64>() / n as f64;
+        let var = estimates.iter().map(|e| (e[c] - mean).powi(2)).sum::<f64>() / (n - 1) as f64;
+        let se = (var / n as f64).sqrt();
+        let want = truth.to_array()[c];
+        assert!(se > 0.0 && (mean - want).abs() < 4.0 * se, "channel {c}: {mean} against {want}, se {se}");
+    }
+}
+
+/// Box buckets over 360–830 nm converge on the exact reference over it as
+/// the buckets narrow, as over 380–730 nm (products of bucket means: at
+/// 5 nm buckets 0.17 % off in Y on either range, at 1 nm 0.01 %).
+#[test]
+fn regular_buckets_over_360_830_converge() {
+    let (d65, g4) = (DenseSpectrum::new(&lights::CIE_D65), DenseSpectrum::new(&patches::G4));
+    let truth = exact(&[&d65, &g4]);
+    fn error<const M: usize>(l: &DenseSpectrum, s: &DenseSpectrum, truth: Xyz) -> f64 {
+        type R<const M: usize> = speclab::RegularSpectrum<M, BoxAverage<VisibleBand>>;
+        let xyz = (R::<M>::box_average(l) * R::<M>::box_average(s)).to_xyz();
+        (xyz.to_array().into_iter().zip(truth.to_array()))
+            .map(|(g, w)| (g / w - 1.0).abs())
+            .fold(0.0, f64::max)
+    }
+    let errors =
+        [error::<8>(&d65, &g4, truth), error::<94>(&d65, &g4, truth), error::<470>(&d65, &g4, truth)];
+    assert!(errors[0] > errors[1] && errors[1] > errors[2], "{errors:?}");
+    assert!(errors[1] < 3e-3 && errors[2] < 2e-4, "{errors:?}");
+}
+
+/// A rule may put wavelengths anywhere in 360–830 nm.
+#[test]
+fn rules_reach_360_830() {
+    let rule =
+        Rule::new(vec![360.0, 555.0, 830.0], [vec![1.0; 3], vec![2.0; 3], vec![3.0; 3]]).expect("valid");
+    let ramp = speclab::spectrum::FnSpectrum(|lambda: f64| lambda);
+    assert_eq!(rule.xyz_of_product(&[&ramp]).y, 2.0 * (360.0 + 555.0 + 830.0));
+    assert!(Rule::new(vec![359.0], [vec![1.0], vec![1.0], vec![1.0]]).is_err());
+}
