@@ -98,8 +98,8 @@ impl LightPdf {
     /// use speclab::data::lights;
     /// use speclab::sampling::pdf::{LightPdf, WavelengthPdf};
     /// use speclab::spectrum::{StandardObserver, WavelengthRange};
-    /// let d65 = LightPdf::weighted_in(&lights::CIE_D65, [1.0; 3], StandardObserver::Cie1931, WavelengthRange::VISIBLE)?;
-    /// assert!(d65.pdf(370.0) > 0.0 && d65.pdf(800.0) > 0.0 && d65.pdf(850.0) == 0.0);
+    /// let e = LightPdf::weighted_in(&lights::E, [1.0; 3], StandardObserver::Cie1931, WavelengthRange::VISIBLE)?;
+    /// assert!(e.pdf(370.0) > 0.0 && e.pdf(800.0) > 0.0 && e.pdf(850.0) == 0.0);
     /// # Ok::<(), speclab::Error>(())
     /// ```
     pub fn weighted_in(
