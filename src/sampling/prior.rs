@@ -41,10 +41,19 @@ pub struct PriorReflectance {
 }
 
 impl Spectrum for PriorReflectance {
+    /// The formula over 380–730 nm, zero outside.
     fn eval(&self, lambda: f64) -> f64 {
         if !(LAMBDA_MIN..=LAMBDA_MAX).contains(&lambda) {
             return 0.0;
         }
+        self.value(lambda)
+    }
+}
+
+impl PriorReflectance {
+    /// The formula at any wavelength (a fit over a wider range reads it
+    /// there).
+    pub(crate) fn value(&self, lambda: f64) -> f64 {
         let t = (lambda - 555.0) / 175.0;
         let [a, b, c] = self.quadratic;
         let bumps: f64 = self
@@ -174,6 +183,7 @@ mod tests {
         let v = p[0].eval(555.0);
         assert!((0.03..=0.97).contains(&v));
         assert_eq!(p[0].eval(379.0), 0.0);
+        assert!(p[0].value(379.0) > 0.0 && p[0].value(830.0) < 1.0 && p[1].value(360.0) > 0.0);
         let mean = PriorMean.eval(555.0);
         assert!(mean > 0.2 && mean < 0.8, "{mean}");
     }

@@ -136,3 +136,39 @@ fn rgb_albedos_move_little_under_the_cie_observer() {
         assert!(worst < 0.25 && mean < 0.02 && worst > 0.0, "{}: mean {mean}, worst {worst}", space.name());
     }
 }
+
+/// Rules fitted over 360–830 nm with the CIE 1931 observer: their
+/// wavelengths in the range, the perfect white under the light reproduced
+/// to the fit's anchor tolerance, the six patches within 1 % in Y at
+/// M = 10, more accurate than M = 3; the default fit is the fit over the
+/// assignment's range and observer, bit for bit.
+#[test]
+fn rules_fitted_over_360_830() {
+    use speclab::sampling::fitted::{ANCHOR_TOLERANCE, FittedRules};
+    let d65 = d65_held();
+    let rules = FittedRules::new_in(&[&d65], CIE, VISIBLE).expect("bright");
+    let (rule, coarse) = (rules.rule(10).unwrap(), rules.rule(3).unwrap());
+    assert!(rule.lambda().iter().all(|&l| VISIBLE.contains(l)) && rule.m() == 10);
+    let white = exact(&[&d65]);
+    let got = rule.xyz_of_product(&[&d65]);
+    for (g, w) in got.to_array().into_iter().zip(white.to_array()) {
+        assert!((g / w - 1.0).abs() <= ANCHOR_TOLERANCE, "{got:?} against {white:?}");
+    }
+    let error = |rule: &Rule| {
+        patches::ALL
+            .iter()
+            .map(|&(_, p)| (rule.xyz_of_product(&[&d65, p]).y / exact(&[&d65, p]).y - 1.0).abs())
+            .fold(0.0, f64::max)
+    };
+    assert!(error(rule) < 0.01 && error(rule) < error(coarse), "{} {}", error(rule), error(coarse));
+    assert_eq!(Rule::fit_in(&[&d65], 10, CIE, VISIBLE).unwrap(), *rule);
+    let assignment =
+        Rule::fit_in(&[&lights::F11], 6, StandardObserver::Assignment, WavelengthRange::ASSIGNMENT);
+    assert_eq!(assignment.unwrap(), Rule::fit(&[&lights::F11], 6).unwrap());
+    for (a, b) in [(300.0, 830.0), (360.5, 830.0), (360.0, 829.5)] {
+        let range = WavelengthRange::new(a, b).unwrap();
+        let e = Rule::fit_in(&[&d65], 10, CIE, range).unwrap_err();
+        assert!(matches!(e, speclab::Error::RangeOutside { .. }), "{a}–{b}: {e}");
+    }
+    assert!(Rule::fit_in(&[&d65], 0, CIE, VISIBLE).is_err());
+}

@@ -47,10 +47,10 @@ pub use moments::{MAX_REFLECTANCE, MAX_SURFACES};
 use std::sync::{Arc, OnceLock};
 
 use crate::error::Error;
-use crate::sampling::fitted::moments::CANDIDATES;
+use crate::sampling::fitted::moments::{CANDIDATES, Grid};
 use crate::sampling::fitted::problem::Problem;
 use crate::sampling::rule::{MAX_M, Rule, check_m};
-use crate::spectrum::{LAMBDA_MIN, Spectrum};
+use crate::spectrum::{Spectrum, StandardObserver, WavelengthRange};
 
 /// How closely a rule reproduces the XYZ of the perfect white under each of
 /// its lights and of the prior's mean reflectance, relative (tested).
@@ -66,7 +66,7 @@ fn as_dyn<S: Spectrum>(lights: &[S]) -> Vec<&dyn Spectrum> {
 /// apart up to `m` (see [`FittedRules::rule`]).
 fn fit(problem: &Problem, m: usize) -> Vec<Rule> {
     let (nodes, weights) = problem.fit(m.clamp(1, MAX_M.min(CANDIDATES)));
-    let lambda: Vec<f64> = nodes.iter().map(|&j| LAMBDA_MIN + j as f64).collect();
+    let lambda: Vec<f64> = nodes.iter().map(|&j| problem.grid.lambda(j)).collect();
     weights.into_iter().map(|w| Rule::fitted(lambda.clone(), w)).collect()
 }
 
@@ -79,7 +79,35 @@ impl Rule {
     /// [`FittedRules`] once.
     pub fn fit<S: Spectrum>(lights: &[S], m: usize) -> Result<Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(fit(&Problem::new(&as_dyn(lights))?, m).swap_remove(0))
+        Ok(fit(&Problem::new(&as_dyn(lights), Grid::ASSIGNMENT)?, m).swap_remove(0))
+    }
+
+    /// [`Rule::fit`] over `range` with `observer`: the rule's wavelengths
+    /// anywhere on the range's whole nanometres, its weights reproducing
+    /// that observer's XYZ over it (a renderer's 360–830 nm with the CIE
+    /// 1931 observer). The prior is the same formulas read over the range.
+    /// An [`Error::RangeOutside`] for a range beyond the observer's data
+    /// or with ends off whole nanometres; otherwise errors as `fit`'s.
+    ///
+    /// ```
+    /// use speclab::data::{lights, patches};
+    /// use speclab::sampling::{reference, rule::Rule};
+    /// use speclab::spectrum::{StandardObserver, WavelengthRange};
+    /// let (cie, visible) = (StandardObserver::Cie1931, WavelengthRange::VISIBLE);
+    /// let rule = Rule::fit_in(&[&lights::E], 8, cie, visible)?;
+    /// let exact = reference::xyz_over(cie, visible, &[&lights::E, &patches::G4])?;
+    /// let fitted = rule.xyz_of_product(&[&lights::E, &patches::G4]);
+    /// assert!((fitted.y / exact.y - 1.0).abs() < 0.01);
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    pub fn fit_in<S: Spectrum>(
+        lights: &[S],
+        m: usize,
+        observer: StandardObserver,
+        range: WavelengthRange,
+    ) -> Result<Rule, Error> {
+        check_m("a fitted wavelength count", m)?;
+        Ok(fit(&Problem::new(&as_dyn(lights), Grid::new(range, observer)?)?, m).swap_remove(0))
     }
 
     /// One rule per light, all at the same `m` wavelengths, each with
@@ -110,7 +138,7 @@ impl Rule {
     /// ```
     pub fn fit_each<S: Spectrum>(lights: &[S], m: usize) -> Result<Vec<Rule>, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(fit(&Problem::each(&as_dyn(lights))?, m))
+        Ok(fit(&Problem::each(&as_dyn(lights), Grid::ASSIGNMENT)?, m))
     }
 }
 
@@ -150,8 +178,21 @@ impl FittedRules {
     /// The rules of `lights` (any slice of spectra); an [`Error::NoMass`]
     /// as in [`Rule::fit`].
     pub fn new<S: Spectrum>(lights: &[S]) -> Result<Self, Error> {
-        let problem = Problem::new(&as_dyn(lights))?;
-        Ok(FittedRules(Arc::new(Fits { problem, rules: [const { OnceLock::new() }; MAX_M] })))
+        Ok(Self::of_problem(Problem::new(&as_dyn(lights), Grid::ASSIGNMENT)?))
+    }
+
+    /// The rules of `lights` over `range` with `observer`, as
+    /// [`Rule::fit_in`] fits them (its errors).
+    pub fn new_in<S: Spectrum>(
+        lights: &[S],
+        observer: StandardObserver,
+        range: WavelengthRange,
+    ) -> Result<Self, Error> {
+        Ok(Self::of_problem(Problem::new(&as_dyn(lights), Grid::new(range, observer)?)?))
+    }
+
+    fn of_problem(problem: Problem) -> Self {
+        FittedRules(Arc::new(Fits { problem, rules: [const { OnceLock::new() }; MAX_M] }))
     }
 
     /// The rules of `lights` fitted over a scene's own `surfaces` instead of
@@ -187,8 +228,7 @@ impl FittedRules {
     /// # Ok::<(), speclab::Error>(())
     /// ```
     pub fn with_surfaces<S: Spectrum, R: Spectrum>(lights: &[S], surfaces: &[R]) -> Result<Self, Error> {
-        let problem = Problem::over(&as_dyn(lights), &as_dyn(surfaces))?;
-        Ok(FittedRules(Arc::new(Fits { problem, rules: [const { OnceLock::new() }; MAX_M] })))
+        Ok(Self::of_problem(Problem::over(&as_dyn(lights), &as_dyn(surfaces), Grid::ASSIGNMENT)?))
     }
 
     /// The rules of one light: [`FittedRules::new`]`(&[light])`.

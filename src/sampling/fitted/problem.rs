@@ -25,8 +25,8 @@
 //! power gives the same rule.
 
 use crate::error::Error;
-use crate::sampling::fitted::moments::{CANDIDATES, Moments, candidate};
-use crate::spectrum::{Spectrum, integrate};
+use crate::sampling::fitted::moments::{Grid, Moments};
+use crate::spectrum::Spectrum;
 
 /// The anchors' weight, relative to the prior's mean row weight (squared).
 pub(crate) const ANCHOR: f64 = 1e4;
@@ -37,6 +37,7 @@ pub(crate) const ANCHOR: f64 = 1e4;
 /// are X, Y and Z of group `g`; a group is all the lights together (one
 /// weight set serving every light) or one light (weights of its own).
 pub(crate) struct Problem {
+    pub(super) grid: Grid,
     pub(super) sets: Vec<Rows>,
 }
 
@@ -48,8 +49,8 @@ pub(super) struct Rows {
 }
 
 impl Rows {
-    fn new() -> Self {
-        Rows { gram: vec![0.0; CANDIDATES * CANDIDATES], rhs: vec![0.0; CANDIDATES], square: 0.0 }
+    fn new(n: usize) -> Self {
+        Rows { gram: vec![0.0; n * n], rhs: vec![0.0; n], square: 0.0 }
     }
 }
 
@@ -58,22 +59,26 @@ impl Problem {
     /// with one set of weights. An [`Error::NoMass`] if there are none or
     /// one has no power the observer sees (a white that is zero, or not
     /// finite, in every channel).
-    pub(crate) fn new(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
-        Self::grouped(lights, false, Moments::builtin())
+    pub(crate) fn new(lights: &[&dyn Spectrum], grid: Grid) -> Result<Self, Error> {
+        Self::grouped(lights, false, Moments::builtin(grid))
     }
 
     /// One group per light: shared nodes, each light its own weights.
-    pub(crate) fn each(lights: &[&dyn Spectrum]) -> Result<Self, Error> {
-        Self::grouped(lights, true, Moments::builtin())
+    pub(crate) fn each(lights: &[&dyn Spectrum], grid: Grid) -> Result<Self, Error> {
+        Self::grouped(lights, true, Moments::builtin(grid))
     }
 
     /// One group, all of `lights` together, over `surfaces` instead of the
     /// built-in prior (errors as [`Moments::of`] and [`Problem::new`]).
-    pub(crate) fn over(lights: &[&dyn Spectrum], surfaces: &[&dyn Spectrum]) -> Result<Self, Error> {
+    pub(crate) fn over(
+        lights: &[&dyn Spectrum],
+        surfaces: &[&dyn Spectrum],
+        grid: Grid,
+    ) -> Result<Self, Error> {
         if lights.is_empty() {
             return Err(Error::NoMass);
         }
-        Self::grouped(lights, false, &Moments::of(surfaces)?)
+        Self::grouped(lights, false, &Moments::of(surfaces, grid)?)
     }
 
     fn grouped(lights: &[&dyn Spectrum], each: bool, m: &Moments) -> Result<Self, Error> {
@@ -81,7 +86,8 @@ impl Problem {
             return Err(Error::NoMass);
         }
         let groups = if each { lights.len() } else { 1 };
-        let mut problem = Problem { sets: (0..3 * groups).map(|_| Rows::new()).collect() };
+        let n = m.grid.count();
+        let mut problem = Problem { grid: m.grid, sets: (0..3 * groups).map(|_| Rows::new(n)).collect() };
         for (i, &light) in lights.iter().enumerate() {
             let group = if each { i } else { 0 };
             problem.add(m, light, group)?;
@@ -96,21 +102,23 @@ impl Problem {
         // that any scale of light (subnormal to 1e100) gives the same
         // numbers; a channel far below the others is weighted as if at a
         // thousandth of it.
-        let white = integrate::white(light);
+        let grid = m.grid;
+        let white = grid.white(light);
         let scale = white.iter().copied().fold(0.0, f64::max);
         if !(scale.is_finite() && scale > 0.0) {
             return Err(Error::NoMass);
         }
         let white = white.map(|w| w / scale);
-        let l: [f64; CANDIDATES] = std::array::from_fn(|j| light.eval(candidate(j)) / scale);
+        let n = grid.count();
+        let l: Vec<f64> = (0..n).map(|j| light.eval(grid.lambda(j)) / scale).collect();
         let (targets, mean_target) = m.targets(light, scale);
         let mean = &m.mean;
         for c in 0..3 {
             let channel = 1.0 / white[c].max(1e-3).powi(2);
             let Rows { gram, rhs, square } = &mut self.sets[3 * group + c];
-            for j in 0..CANDIDATES {
-                for k in 0..CANDIDATES {
-                    gram[j * CANDIDATES + k] += channel * l[j] * l[k] * m.gram[c][j * CANDIDATES + k];
+            for j in 0..n {
+                for k in 0..n {
+                    gram[j * n + k] += channel * l[j] * l[k] * m.gram[c][j * n + k];
                 }
             }
             for ((v, w), t) in m.values.iter().zip(&m.omega2).zip(&targets) {
@@ -122,12 +130,13 @@ impl Problem {
             }
             // Anchors: the white (r = 1) and the prior's mean.
             let kappa = ANCHOR * m.mean_omega2[c] * channel;
-            for (row, target) in [(&[1.0; CANDIDATES], white[c]), (mean, mean_target[c])] {
-                for j in 0..CANDIDATES {
+            let ones = vec![1.0; n];
+            for (row, target) in [(&ones, white[c]), (mean, mean_target[c])] {
+                for j in 0..n {
                     let aj = l[j] * row[j];
                     rhs[j] += kappa * aj * target;
-                    for k in 0..CANDIDATES {
-                        gram[j * CANDIDATES + k] += kappa * aj * l[k] * row[k];
+                    for k in 0..n {
+                        gram[j * n + k] += kappa * aj * l[k] * row[k];
                     }
                 }
                 *square += kappa * target * target;

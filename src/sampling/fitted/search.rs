@@ -13,7 +13,6 @@
 //!   where it was, by the same formula; sweeps repeat while any move lowers
 //!   the residual.
 
-use crate::sampling::fitted::moments::CANDIDATES;
 use crate::sampling::fitted::problem::Problem;
 
 /// How far refinement moves a node, nm (candidates).
@@ -28,9 +27,14 @@ struct Factor {
 }
 
 impl Problem {
+    /// How many candidates.
+    fn candidates(&self) -> usize {
+        self.grid.count()
+    }
+
     /// `G[j][k]` of set `c`.
     fn g(&self, c: usize, j: usize, k: usize) -> f64 {
-        self.sets[c].gram[j * CANDIDATES + k]
+        self.sets[c].gram[j * self.candidates() + k]
     }
 
     /// `b[j]` of set `c`.
@@ -45,13 +49,13 @@ impl Problem {
 
     /// A tiny ridge on set `c`'s diagonal, against rounding.
     fn ridge(&self, c: usize) -> f64 {
-        1e-13 * (0..CANDIDATES).map(|j| self.g(c, j, j)).fold(0.0, f64::max)
+        1e-13 * (0..self.candidates()).map(|j| self.g(c, j, j)).fold(0.0, f64::max)
     }
 
     /// The M nodes (candidate indices, increasing) and per group the
     /// weights of each channel, by greedy choice and local refinement.
     pub(crate) fn fit(&self, m: usize) -> (Vec<usize>, Vec<[Vec<f64>; 3]>) {
-        let mut nodes = self.greedy(m.min(CANDIDATES));
+        let mut nodes = self.greedy(m.min(self.candidates()));
         self.refine(&mut nodes);
         nodes.sort_unstable();
         let weights =
@@ -63,9 +67,9 @@ impl Problem {
     fn greedy(&self, m: usize) -> Vec<usize> {
         let sets = 0..self.count();
         let mut z: Vec<Vec<Vec<f64>>> =
-            sets.clone().map(|_| (0..CANDIDATES).map(|_| Vec::with_capacity(m)).collect()).collect();
+            sets.clone().map(|_| (0..self.candidates()).map(|_| Vec::with_capacity(m)).collect()).collect();
         let mut d: Vec<Vec<f64>> =
-            sets.clone().map(|c| (0..CANDIDATES).map(|j| self.g(c, j, j)).collect()).collect();
+            sets.clone().map(|c| (0..self.candidates()).map(|j| self.g(c, j, j)).collect()).collect();
         let mut y: Vec<Vec<f64>> = sets.clone().map(|_| Vec::with_capacity(m)).collect();
         let ridge: Vec<f64> = sets.clone().map(|c| self.ridge(c)).collect();
         let mut nodes = Vec::with_capacity(m);
@@ -78,15 +82,15 @@ impl Problem {
                     })
                     .sum()
             };
-            let open =
-                (0..CANDIDATES).filter(|&j| !nodes.contains(&j) && sets.clone().all(|c| d[c][j] > ridge[c]));
+            let open = (0..self.candidates())
+                .filter(|&j| !nodes.contains(&j) && sets.clone().all(|c| d[c][j] > ridge[c]));
             let Some(s) = best(open.map(|j| (j, -score(j)))) else { break };
             for c in sets.clone() {
                 let root = d[c][s].sqrt();
                 let zs = z[c][s].clone();
                 let ys = (self.b(c, s) - dot(&zs, &y[c])) / root;
                 y[c].push(ys);
-                for j in 0..CANDIDATES {
+                for j in 0..self.candidates() {
                     let e = (self.g(c, s, j) - dot(&zs, &z[c][j])) / root;
                     z[c][j].push(e);
                     d[c][j] -= e * e;
@@ -107,7 +111,7 @@ impl Problem {
                     nodes.iter().enumerate().filter(|&(k, _)| k != i).map(|(_, &j)| j).collect();
                 let factors: Vec<Factor> = (0..self.count()).map(|c| self.factor(c, &others)).collect();
                 let here = nodes[i];
-                let (lo, hi) = (here.saturating_sub(WINDOW), (here + WINDOW).min(CANDIDATES - 1));
+                let (lo, hi) = (here.saturating_sub(WINDOW), (here + WINDOW).min(self.candidates() - 1));
                 let open = (lo..=hi).filter(|j| !others.contains(j));
                 let scored = open.filter_map(|j| {
                     let gain: Option<f64> =
@@ -223,7 +227,7 @@ mod tests {
     #[test]
     fn the_residual_is_what_the_fit_leaves_of_the_targets() {
         for light in [&lights::F11, &lights::A] {
-            let p = Problem::new(&[light]).unwrap();
+            let p = Problem::new(&[light], crate::sampling::fitted::moments::Grid::ASSIGNMENT).unwrap();
             let total: f64 = p.sets.iter().map(|r| r.square).sum();
             assert!(total > 0.0);
             assert!((p.residual(&[]) - total).abs() <= 1e-12 * total);
@@ -241,7 +245,7 @@ mod tests {
     #[test]
     fn refinement_improves_on_greedy_choice() {
         for light in [&lights::F11, &lights::A, &lights::D65] {
-            let p = Problem::new(&[light]).unwrap();
+            let p = Problem::new(&[light], crate::sampling::fitted::moments::Grid::ASSIGNMENT).unwrap();
             for m in 3..=12 {
                 let mut nodes = p.greedy(m);
                 let before = p.residual(&nodes);
