@@ -1,5 +1,6 @@
 //! The least-squares problem behind [`Rule::fit`](crate::sampling::rule::Rule::fit): choose
-//! M of the candidate wavelengths (every nm from 380 to 730) and per
+//! M of the candidate wavelengths (every nm of the range: 380 to 730 by
+//! default, `moments::Grid`) and per
 //! channel the weights that best reproduce the exact XYZ of light ×
 //! reflectance over the prior (`prior.rs`), or over a scene's own surfaces
 //! (`FittedRules::with_surfaces`).
