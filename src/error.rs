@@ -159,6 +159,12 @@ pub enum Error {
         /// The upper end given, nm.
         max: f64,
     },
+    /// A range whose ends must be whole nanometres (a 1 nm table's rows,
+    /// a fit's candidates) and are not.
+    WholeNanometres {
+        /// The range given, nm.
+        range: [f64; 2],
+    },
     /// A wavelength range beyond an observer's data (or a weighting
     /// table's wavelengths).
     RangeOutside {
@@ -270,6 +276,9 @@ impl fmt::Display for Error {
             }
             Error::Range { min, max } => {
                 write!(f, "expected a wavelength range 0 < min < max nm, finite, found {min}–{max}")
+            }
+            Error::WholeNanometres { range: [a, b] } => {
+                write!(f, "expected a range with whole-nanometre ends, found {a}–{b} nm")
             }
             Error::RangeOutside { range: [a, b], of, data: [lo, hi] } => {
                 write!(f, "expected a range within {of}'s data ({lo}–{hi} nm), found {a}–{b} nm")

@@ -60,7 +60,11 @@ impl Weights {
     }
 
     /// [`Weights::e2022`] not normalised (`k = 1`): `Σ W_y` is the light's
-    /// `Σ S·ȳ` over the range, nm.
+    /// `Σ S·ȳ` over the range, nm. An [`Error::UnknownName`] for an
+    /// observer without a 1 nm table, an [`Error::Step`] for a step that
+    /// is not a whole number from 1 to [`MAX_STEP`] or leaves fewer than
+    /// three weights, an [`Error::WholeNanometres`] for a range starting
+    /// off the table's nanometres.
     pub fn e2022_unscaled(light: &(impl Spectrum + ?Sized), grid: Tristimulus) -> Result<Self, Error> {
         let observer = grid.observer();
         let Some((first, 1.0, cmf)) = observer.table() else {
@@ -75,12 +79,12 @@ impl Weights {
             return Err(Error::Step { step, width: MAX_STEP as f64 });
         }
         let (lo, hi) = (grid.range().min() - first, grid.range().max() - first);
-        if lo.fract() != 0.0 || (hi - lo) < 2.0 * step {
-            return Err(Error::RangeOutside {
-                range: [grid.range().min(), grid.range().max()],
-                of: "a weighting table (whole nanometres, three steps at least)",
-                data: [first, first + (cmf.len() - 1) as f64],
-            });
+        if lo.fract() != 0.0 {
+            return Err(Error::WholeNanometres { range: [grid.range().min(), grid.range().max()] });
+        }
+        if hi - lo < 2.0 * step {
+            // Three weights at least: the Lagrange polynomials' stencil.
+            return Err(Error::Step { step, width: 0.5 * (hi - lo) });
         }
         let rows = &cmf[lo as usize..=hi.floor() as usize];
         let min = grid.range().min();
@@ -284,10 +288,18 @@ mod tests {
         assert_eq!((w.first(), w.rows()), (400.0, &rows[40..=340]));
         let ten = Weights::e2022(&e, grid(360.0, 780.0, 10.0)).unwrap();
         assert_eq!((ten.first(), ten.step(), ten.rows().len()), (360.0, 10.0, 43));
-        for (a, b, step) in [(400.5, 700.0, 10.0), (400.0, 419.0, 10.0)] {
-            let e = Weights::e2022(&e, grid(a, b, step)).unwrap_err().to_string();
-            assert!(e.contains("whole nanometres, three steps at least"), "{e}");
-        }
+        let off = Weights::e2022(&e, grid(400.5, 700.0, 10.0)).unwrap_err().to_string();
+        assert_eq!(off, "expected a range with whole-nanometre ends, found 400.5–700 nm");
+        let short = Weights::e2022(&e, grid(400.0, 419.0, 10.0)).unwrap_err().to_string();
+        assert_eq!(short, "expected a wavelength step in (0, 9.5] nm, found 10");
         assert_eq!(Weights::e2022(&e, grid(400.0, 420.0, 10.0)).unwrap().rows().len(), 3);
+        // The light is read at each nanometre of the range: a ramp's
+        // 1 nm weights are the table's rows times the wavelength.
+        let ramp = crate::spectrum::FnSpectrum(|lambda: f64| lambda);
+        let w = Weights::e2022_unscaled(&ramp, grid(400.0, 420.0, 1.0)).unwrap();
+        for (i, row) in w.rows().iter().enumerate() {
+            let want = rows[40 + i].map(|v| v * (400.0 + i as f64));
+            assert_eq!(*row, want, "{i}");
+        }
     }
 }

@@ -117,10 +117,11 @@ impl Sprague {
         c
     }
 
-    /// The value outside the samples: the nearer end's, or zero.
-    fn outside(&self, lambda: f64) -> f64 {
+    /// The value outside the samples, below or above them: the nearer
+    /// end's, or zero.
+    fn outside(&self, below: bool) -> f64 {
         let values = self.values();
-        match (self.zero_outside, lambda < self.range.min()) {
+        match (self.zero_outside, below) {
             (true, _) => 0.0,
             (false, true) => values[0],
             (false, false) => values[values.len() - 1],
@@ -131,7 +132,7 @@ impl Sprague {
 impl Spectrum for Sprague {
     fn eval(&self, lambda: f64) -> f64 {
         if !self.range.contains(lambda) {
-            return if lambda.is_nan() { f64::NAN } else { self.outside(lambda) };
+            return if lambda.is_nan() { f64::NAN } else { self.outside(lambda < self.range.min()) };
         }
         let segments = self.values().len() - 1;
         let t = (lambda - self.range.min()) / self.step;
@@ -151,7 +152,7 @@ impl Spectrum for Sprague {
         let segments = self.values().len() - 1;
         (0..segments)
             .map(|i| bernstein(self.segment(i)).into_iter().fold(f64::MIN, f64::max))
-            .fold(self.outside(0.0).max(self.outside(f64::MAX)), f64::max)
+            .fold(self.outside(true).max(self.outside(false)), f64::max)
     }
 }
 

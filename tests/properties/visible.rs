@@ -165,10 +165,11 @@ fn rules_fitted_over_360_830() {
     let assignment =
         Rule::fit_in(&[&lights::F11], 6, StandardObserver::Assignment, WavelengthRange::ASSIGNMENT);
     assert_eq!(assignment.unwrap(), Rule::fit(&[&lights::F11], 6).unwrap());
-    for (a, b) in [(300.0, 830.0), (360.5, 830.0), (360.0, 829.5)] {
-        let range = WavelengthRange::new(a, b).unwrap();
-        let e = Rule::fit_in(&[&d65], 10, CIE, range).unwrap_err();
-        assert!(matches!(e, speclab::Error::RangeOutside { .. }), "{a}–{b}: {e}");
+    let outside = Rule::fit_in(&[&d65], 10, CIE, WavelengthRange::new(300.0, 830.0).unwrap()).unwrap_err();
+    assert!(matches!(outside, speclab::Error::RangeOutside { .. }), "{outside}");
+    for (a, b) in [(360.5, 830.0), (360.0, 829.5)] {
+        let e = Rule::fit_in(&[&d65], 10, CIE, WavelengthRange::new(a, b).unwrap()).unwrap_err().to_string();
+        assert_eq!(e, format!("expected a range with whole-nanometre ends, found {a}–{b} nm"));
     }
     assert!(Rule::fit_in(&[&d65], 0, CIE, VISIBLE).is_err());
 }

@@ -86,8 +86,9 @@ impl Rule {
     /// anywhere on the range's whole nanometres, its weights reproducing
     /// that observer's XYZ over it (a renderer's 360–830 nm with the CIE
     /// 1931 observer). The prior is the same formulas read over the range.
-    /// An [`Error::RangeOutside`] for a range beyond the observer's data
-    /// or with ends off whole nanometres; otherwise errors as `fit`'s.
+    /// An [`Error::RangeOutside`] for a range beyond the observer's data, an
+    /// [`Error::WholeNanometres`] for ends off whole nanometres; otherwise
+    /// errors as `fit`'s.
     ///
     /// ```
     /// use speclab::data::{lights, patches};

@@ -39,11 +39,7 @@ impl Grid {
     pub(crate) fn new(range: WavelengthRange, observer: StandardObserver) -> Result<Grid, Error> {
         let range = observer.check(range)?;
         if range.min().fract() != 0.0 || range.max().fract() != 0.0 {
-            return Err(Error::RangeOutside {
-                range: [range.min(), range.max()],
-                of: "a fit's candidates (whole nanometres)",
-                data: [observer.data_range().min(), observer.data_range().max()],
-            });
+            return Err(Error::WholeNanometres { range: [range.min(), range.max()] });
         }
         Ok(Grid { range, observer })
     }
