@@ -122,8 +122,9 @@ impl Practice {
             });
         }
         let range = self.range(observer)?;
-        let (first, last) = (measured.range().min(), measured.range().max());
-        let off_tens = first % 10.0 != 0.0 || last % 10.0 != 0.0;
+        // At 10 or 20 nm the last sample is off a multiple of 10 nm when
+        // the first is.
+        let off_tens = measured.range().min() % 10.0 != 0.0;
         let integrate = |step: f64| integrate(Tristimulus::new(observer, range, step)?, light, measured);
         match step {
             10.0 | 20.0 if off_tens => integrate(1.0),
@@ -265,6 +266,22 @@ mod tests {
                 let sums = practice.absolute(&grey, &e, StandardObserver::Cie1931).unwrap();
                 assert!((sums.y / xyz.y - 106.8569171 / 100.0).abs() < 0.02, "{step} nm: {sums:?}");
             }
+        }
+    }
+
+    #[test]
+    fn one_nm_and_off_tens_measurements_are_summed_every_nanometre() {
+        let ramp = crate::spectrum::FnSpectrum(|lambda: f64| lambda / 100.0);
+        let every_nm =
+            Tristimulus::new(StandardObserver::Cie1931, WavelengthRange::new(360.0, 780.0).unwrap(), 1.0)
+                .unwrap();
+        // A 1 nm measurement, zero outside, and a 10 nm one starting at 405 nm.
+        let one = Sprague::new(400.0, 1.0, (0..301).map(|i| 0.2 + 0.001 * f64::from(i)).collect()).unwrap();
+        let ten = Sprague::new(405.0, 10.0, (0..30).map(|i| 0.3 + 0.01 * f64::from(i)).collect()).unwrap();
+        for measured in [one.zero_outside(), ten] {
+            let e308 = Practice::E308.relative(&measured, &ramp, StandardObserver::Cie1931).unwrap();
+            let sum = every_nm.relative(&ramp, &measured).unwrap();
+            assert!((e308 - sum).to_array().iter().all(|d| d.abs() < 1e-12), "{e308:?} against {sum:?}");
         }
     }
 }
