@@ -159,11 +159,15 @@ pub enum Error {
         /// The upper end given, nm.
         max: f64,
     },
-    /// A range whose ends must be whole nanometres (a 1 nm table's rows,
-    /// a fit's candidates) and are not.
-    WholeNanometres {
+    /// A range whose ends must lie on a grid (a 1 nm table's nanometres,
+    /// a fit's candidates, a weighting table's wavelengths) and do not.
+    OffGrid {
         /// The range given, nm.
         range: [f64; 2],
+        /// The grid's first wavelength, nm.
+        first: f64,
+        /// The grid's step, nm.
+        step: f64,
     },
     /// A wavelength range beyond an observer's data (or a weighting
     /// table's wavelengths).
@@ -213,6 +217,9 @@ impl fmt::Display for Error {
             ),
             Error::Count { what, found, min, max } if min == max => {
                 write!(f, "expected {what} of {min}, found {found}")
+            }
+            Error::Count { what, found, min, max: usize::MAX } => {
+                write!(f, "expected {what}: at least {min}, found {found}")
             }
             Error::Count { what, found, min, max } => {
                 write!(f, "expected {what} from {min} to {max}, found {found}")
@@ -277,8 +284,13 @@ impl fmt::Display for Error {
             Error::Range { min, max } => {
                 write!(f, "expected a wavelength range 0 < min < max nm, finite, found {min}–{max}")
             }
-            Error::WholeNanometres { range: [a, b] } => {
-                write!(f, "expected a range with whole-nanometre ends, found {a}–{b} nm")
+            Error::OffGrid { range: [a, b], first, step } => {
+                write!(
+                    f,
+                    "expected a range with ends on {first}, {}, {}, … nm, found {a}–{b} nm",
+                    first + step,
+                    first + 2.0 * step
+                )
             }
             Error::RangeOutside { range: [a, b], of, data: [lo, hi] } => {
                 write!(f, "expected a range within {of}'s data ({lo}–{hi} nm), found {a}–{b} nm")

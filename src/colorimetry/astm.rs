@@ -63,8 +63,8 @@ impl Weights {
     /// `Σ S·ȳ` over the range, nm. An [`Error::UnknownName`] for an
     /// observer without a 1 nm table, an [`Error::Step`] for a step that
     /// is not a whole number from 1 to [`MAX_STEP`] or leaves fewer than
-    /// three weights, an [`Error::WholeNanometres`] for a range starting
-    /// off the table's nanometres.
+    /// three weights, an [`Error::OffGrid`] for a range with ends off the
+    /// table's nanometres.
     pub fn e2022_unscaled(light: &(impl Spectrum + ?Sized), grid: Tristimulus) -> Result<Self, Error> {
         let observer = grid.observer();
         let Some((first, 1.0, cmf)) = observer.table() else {
@@ -79,14 +79,14 @@ impl Weights {
             return Err(Error::Step { step, width: MAX_STEP as f64 });
         }
         let (lo, hi) = (grid.range().min() - first, grid.range().max() - first);
-        if lo.fract() != 0.0 {
-            return Err(Error::WholeNanometres { range: [grid.range().min(), grid.range().max()] });
+        if lo.fract() != 0.0 || hi.fract() != 0.0 {
+            return Err(Error::OffGrid { range: [grid.range().min(), grid.range().max()], first, step: 1.0 });
         }
         if hi - lo < 2.0 * step {
             // Three weights at least: the Lagrange polynomials' stencil.
             return Err(Error::Step { step, width: 0.5 * (hi - lo) });
         }
-        let rows = &cmf[lo as usize..=hi.floor() as usize];
+        let rows = &cmf[lo as usize..=hi as usize];
         let min = grid.range().min();
         let sc: Vec<[f64; 3]> =
             rows.iter().enumerate().map(|(i, c)| c.map(|v| v * light.eval(min + i as f64))).collect();
@@ -134,13 +134,17 @@ impl Weights {
     pub fn trimmed(&self, range: WavelengthRange) -> Result<Self, Error> {
         let index = |lambda: f64| (lambda - self.first) / self.step as f64;
         let (lo, hi) = (index(range.min()), index(range.max()));
-        let on_grid = |i: f64| i.fract() == 0.0 && i >= 0.0 && (i as usize) < self.rows.len();
-        if !(on_grid(lo) && on_grid(hi)) {
+        let inside = |i: f64| i >= 0.0 && i <= (self.rows.len() - 1) as f64;
+        if !(inside(lo) && inside(hi)) {
             return Err(Error::RangeOutside {
                 range: [range.min(), range.max()],
                 of: "the weighting table",
                 data: [self.first, self.first + (self.step * (self.rows.len() - 1)) as f64],
             });
+        }
+        if lo.fract() != 0.0 || hi.fract() != 0.0 {
+            let (first, step) = (self.first, self.step as f64);
+            return Err(Error::OffGrid { range: [range.min(), range.max()], first, step });
         }
         let (lo, hi) = (lo as usize, hi as usize);
         let mut rows = self.rows[lo..=hi].to_vec();
@@ -253,12 +257,18 @@ mod tests {
             Err(Error::Dark { .. })
         ));
         let w = Weights::e2022(&e, Tristimulus::CIE_1931.with_step(20.0).unwrap()).unwrap();
-        for (a, b) in [(410.0, 700.0), (400.0, 710.0), (340.0, 700.0), (400.0, 840.0)] {
+        for (a, b) in [(340.0, 700.0), (400.0, 840.0), (359.0, 700.0), (400.0, 821.0)] {
             let e = w.trimmed(WavelengthRange::new(a, b).unwrap()).unwrap_err().to_string();
             let expected =
                 format!("expected a range within the weighting table's data (360–820 nm), found {a}–{b} nm");
             assert_eq!(e, expected);
         }
+        for (a, b) in [(410.0, 700.0), (400.0, 710.0)] {
+            let e = w.trimmed(WavelengthRange::new(a, b).unwrap()).unwrap_err().to_string();
+            assert_eq!(e, format!("expected a range with ends on 360, 380, 400, … nm, found {a}–{b} nm"));
+        }
+        let whole = w.trimmed(WavelengthRange::new(360.0, 820.0).unwrap()).unwrap();
+        assert_eq!(whole, w);
         let t = w.trimmed(WavelengthRange::new(400.0, 700.0).unwrap()).unwrap();
         assert_eq!((t.first(), t.step(), t.rows().len()), (400.0, 20.0, 16));
         assert!(Weights::from_rows(f64::NAN, 20, vec![[1.0; 3]]).is_err());
@@ -288,8 +298,10 @@ mod tests {
         assert_eq!((w.first(), w.rows()), (400.0, &rows[40..=340]));
         let ten = Weights::e2022(&e, grid(360.0, 780.0, 10.0)).unwrap();
         assert_eq!((ten.first(), ten.step(), ten.rows().len()), (360.0, 10.0, 43));
-        let off = Weights::e2022(&e, grid(400.5, 700.0, 10.0)).unwrap_err().to_string();
-        assert_eq!(off, "expected a range with whole-nanometre ends, found 400.5–700 nm");
+        for (a, b) in [(400.5, 700.0), (400.0, 700.5)] {
+            let off = Weights::e2022(&e, grid(a, b, 10.0)).unwrap_err().to_string();
+            assert_eq!(off, format!("expected a range with ends on 360, 361, 362, … nm, found {a}–{b} nm"));
+        }
         let short = Weights::e2022(&e, grid(400.0, 419.0, 10.0)).unwrap_err().to_string();
         assert_eq!(short, "expected a wavelength step in (0, 9.5] nm, found 10");
         assert_eq!(Weights::e2022(&e, grid(400.0, 420.0, 10.0)).unwrap().rows().len(), 3);

@@ -15,9 +15,12 @@
 //! A measurement at 10 or 20 nm that does not start and end on a multiple
 //! of 10 nm is read at 1 nm through its Sprague interpolant (E308 says
 //! nothing of it; colour-science does this). The sums run over 360–780 nm
-//! (E308's practice range) or the observer's whole table; outside the
-//! measured range the reflectance is what the [`Sprague`] gives (its end
-//! values, unless made zero outside), and the light is read as it is.
+//! (E308's practice range) or the observer's whole table (a CIE 1 nm
+//! table: the assignment's observer is refused). Outside the measured
+//! range, the sums at 1 and 5 nm read what the [`Sprague`] gives (its end
+//! values, or zero if made zero outside); weights fold the rows outside
+//! into the end samples (E308's adjustment: the end values held, whatever
+//! the interpolant says). The light is read as it is.
 //!
 //! ```
 //! use speclab::colorimetry::e308::Practice;
@@ -121,6 +124,13 @@ impl Practice {
                 found: step.to_string(),
             });
         }
+        if observer.table().is_none() {
+            return Err(Error::UnknownName {
+                what: "an observer with a 1 nm table",
+                expected: &["CIE 1931", "CIE 1964"],
+                found: observer.name().to_string(),
+            });
+        }
         let range = self.range(observer)?;
         // At 10 or 20 nm the last sample is off a multiple of 10 nm when
         // the first is.
@@ -155,9 +165,15 @@ fn within(measured: &Sprague, range: WavelengthRange) -> Result<(f64, Vec<f64>),
         .map(|(i, &v)| (first + step * i as f64, v))
         .filter(|&(lambda, _)| range.contains(lambda))
         .collect();
-    match kept.first() {
-        Some(&(lambda, _)) => Ok((lambda, kept.into_iter().map(|(_, v)| v).collect())),
-        None => Err(Error::RangeOutside {
+    match kept[..] {
+        [(lambda, _), _, ..] => Ok((lambda, kept.into_iter().map(|(_, v)| v).collect())),
+        [_] => Err(Error::Count {
+            what: "measured samples within the sums' range",
+            found: 1,
+            min: 2,
+            max: usize::MAX,
+        }),
+        [] => Err(Error::RangeOutside {
             range: [measured.range().min(), measured.range().max()],
             of: "the sums",
             data: [range.min(), range.max()],
@@ -224,9 +240,13 @@ mod tests {
         }
         // A quadratic: the extended ends too, so every midpoint.
         let quadratic = |x: f64| 2.0 - x + 0.25 * x * x;
-        let v: Vec<f64> = (0..4).map(|i| quadratic(f64::from(i))).collect();
-        for (i, t) in twenty_to_ten(&v).unwrap().iter().enumerate() {
-            assert!((t - quadratic(i as f64 / 2.0)).abs() < 1e-12, "{i}");
+        for m in [3, 6] {
+            let v: Vec<f64> = (0..m).map(|i| quadratic(f64::from(i))).collect();
+            let ten = twenty_to_ten(&v).unwrap();
+            assert_eq!(ten.len(), 2 * m as usize - 1);
+            for (i, t) in ten.iter().enumerate() {
+                assert!((t - quadratic(i as f64 / 2.0)).abs() < 1e-12, "{m}: {i}");
+            }
         }
         assert!(twenty_to_ten(&[1.0, 2.0]).is_err());
     }
@@ -238,19 +258,26 @@ mod tests {
         let message = Practice::E308.relative(&two, &e, StandardObserver::Cie1931).unwrap_err().to_string();
         assert_eq!(message, "expected an ASTM E308 measurement interval in nm (1, 5, 10 or 20), found \"2\"");
         let beyond = Sprague::new(790.0, 10.0, vec![0.5; 6]).unwrap();
-        assert!(matches!(
-            Practice::E308.relative(&beyond, &e, StandardObserver::Cie1931),
-            Err(Error::RangeOutside { .. })
-        ));
+        let message =
+            Practice::E308.relative(&beyond, &e, StandardObserver::Cie1931).unwrap_err().to_string();
+        assert_eq!(message, "expected a range within the sums's data (360–780 nm), found 790–840 nm");
+        let last = Sprague::new(780.0, 10.0, vec![0.5; 6]).unwrap();
+        let message = Practice::E308.relative(&last, &e, StandardObserver::Cie1931).unwrap_err().to_string();
+        assert_eq!(message, "expected measured samples within the sums' range: at least 2, found 1");
         let off_grid = Sprague::new(402.0, 5.0, vec![0.5; 40]).unwrap();
-        assert!(Practice::WEIGHTS.relative(&off_grid, &e, StandardObserver::Cie1931).is_err());
+        let message = Practice::WEIGHTS.relative(&off_grid, &e, StandardObserver::Cie1931).unwrap_err();
+        assert!(matches!(message, Error::OffGrid { first: 360.0, step: 5.0, .. }), "{message}");
         let grey = Sprague::new(400.0, 10.0, vec![0.5; 31]).unwrap();
         let dark = Practice::E308.relative(&grey, &Constant::new(0.0), StandardObserver::Cie1964);
         assert_eq!(
             dark.unwrap_err().to_string(),
             "expected a light with power under ȳ within 360–780 nm, found none"
         );
-        assert!(Practice::E308.relative(&grey, &e, StandardObserver::Assignment).is_err());
+        let one_nm = Sprague::new(400.0, 1.0, vec![0.5; 301]).unwrap();
+        for measured in [&grey, &one_nm] {
+            let message = Practice::E308.relative(measured, &e, StandardObserver::Assignment).unwrap_err();
+            assert!(matches!(message, Error::UnknownName { .. }), "{message}");
+        }
         assert_eq!(Practice::default(), Practice::E308);
     }
 
@@ -264,7 +291,9 @@ mod tests {
                 let xyz = practice.relative(&grey, &e, StandardObserver::Cie1931).unwrap();
                 assert!((xyz.y - 25.0).abs() < 1e-12, "{step} nm, {practice:?}: {xyz:?}");
                 let sums = practice.absolute(&grey, &e, StandardObserver::Cie1931).unwrap();
-                assert!((sums.y / xyz.y - 106.8569171 / 100.0).abs() < 0.02, "{step} nm: {sums:?}");
+                // Σ ȳ·Δλ of the 1 nm table, over 360–780 nm (E308) or 360–830 nm.
+                let y = StandardObserver::Cie1931.y_integral(self::range(practice)).unwrap();
+                assert!((sums.y / xyz.y - y / 100.0).abs() < 2e-3 * y / 100.0, "{step} nm: {sums:?}");
             }
         }
     }
@@ -278,10 +307,34 @@ mod tests {
         // A 1 nm measurement, zero outside, and a 10 nm one starting at 405 nm.
         let one = Sprague::new(400.0, 1.0, (0..301).map(|i| 0.2 + 0.001 * f64::from(i)).collect()).unwrap();
         let ten = Sprague::new(405.0, 10.0, (0..30).map(|i| 0.3 + 0.01 * f64::from(i)).collect()).unwrap();
+        let close = |a: Xyz, b: Xyz| (a - b).to_array().iter().all(|d| d.abs() < 1e-12);
         for measured in [one.zero_outside(), ten] {
             let e308 = Practice::E308.relative(&measured, &ramp, StandardObserver::Cie1931).unwrap();
             let sum = every_nm.relative(&ramp, &measured).unwrap();
-            assert!((e308 - sum).to_array().iter().all(|d| d.abs() < 1e-12), "{e308:?} against {sum:?}");
+            assert!(close(e308, sum), "{e308:?} against {sum:?}");
         }
+        // 5 nm: E308 sums every fifth row; weights differ from it.
+        let five =
+            Sprague::new(400.0, 5.0, (0..61).map(|i| 0.2 + 0.1 * (0.3 * f64::from(i)).sin()).collect())
+                .unwrap();
+        let e308 = Practice::E308.relative(&five, &ramp, StandardObserver::Cie1931).unwrap();
+        let every_5nm = every_nm.with_step(5.0).unwrap().relative(&ramp, &five).unwrap();
+        let weights =
+            Practice { omit_5nm: false, ..Practice::E308 }.relative(&five, &ramp, StandardObserver::Cie1931);
+        assert!(close(e308, every_5nm) && !close(e308, weights.unwrap()), "{e308:?}");
+        // Samples past 780 nm are left out of E308's sums, as if never measured.
+        let wide: Vec<f64> = (0..48).map(|i| 0.5 + 0.2 * (0.4 * f64::from(i)).cos()).collect();
+        let (all, kept) = (
+            Sprague::new(360.0, 10.0, wide.clone()).unwrap(),
+            Sprague::new(360.0, 10.0, wide[..43].to_vec()).unwrap(),
+        );
+        let (a, b) = [all, kept]
+            .map(|m| Practice::E308.relative(&m, &ramp, StandardObserver::Cie1931).unwrap())
+            .into();
+        assert!(close(a, b), "{a:?} against {b:?}");
+    }
+
+    fn range(practice: Practice) -> WavelengthRange {
+        practice.range(StandardObserver::Cie1931).unwrap()
     }
 }

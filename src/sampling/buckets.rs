@@ -159,40 +159,41 @@ const fn table_bucket<const N: usize>(table: &[[f64; 3]; N], rule: BucketRule, a
     while c < 3 {
         out[c] = match rule {
             BucketRule::Center => line_value(table, c, 0.5 * (a + b)),
-            BucketRule::BoxAverage => (line_integral(table, c, b) - line_integral(table, c, a)) / (b - a),
+            BucketRule::BoxAverage => line_integral(table, c, a, b) / (b - a),
         };
         c += 1;
     }
     out
 }
 
-/// Channel `c` of the table at `lambda` nm.
+/// Channel `c` of the table at `lambda` nm (zero outside).
 const fn line_value<const N: usize>(table: &[[f64; 3]; N], c: usize, lambda: f64) -> f64 {
     let x = lambda - TABLE_FIRST;
     if !(x >= 0.0 && x <= (N - 1) as f64) {
         return 0.0;
     }
     let j = if x as usize >= N - 1 { N - 2 } else { x as usize };
-    let t = x - j as f64;
-    table[j][c] + t * (table[j + 1][c] - table[j][c])
+    on_segment(table, c, j, x)
 }
 
-/// The integral of channel `c` of the table from its start to `lambda` nm.
-const fn line_integral<const N: usize>(table: &[[f64; 3]; N], c: usize, lambda: f64) -> f64 {
-    let x = lambda - TABLE_FIRST;
-    if x.is_nan() || x <= 0.0 {
-        return 0.0;
+/// Channel `c` on segment `j` (from row `j` to `j + 1`) at `x` rows.
+const fn on_segment<const N: usize>(table: &[[f64; 3]; N], c: usize, j: usize, x: f64) -> f64 {
+    table[j][c] + (x - j as f64) * (table[j + 1][c] - table[j][c])
+}
+
+/// The integral of channel `c` of the table over `[a, b]` nm: a trapezoid
+/// per segment the interval meets.
+const fn line_integral<const N: usize>(table: &[[f64; 3]; N], c: usize, a: f64, b: f64) -> f64 {
+    let lo = (a - TABLE_FIRST).max(0.0);
+    let hi = (b - TABLE_FIRST).min((N - 1) as f64);
+    let (mut x, mut sum) = (lo, 0.0);
+    while x < hi {
+        let j = x as usize;
+        let end = ((j + 1) as f64).min(hi);
+        sum += 0.5 * (on_segment(table, c, j, x) + on_segment(table, c, j, end)) * (end - x);
+        x = end;
     }
-    let x = if x > (N - 1) as f64 { (N - 1) as f64 } else { x };
-    let j = if x as usize >= N - 1 { N - 2 } else { x as usize };
-    let mut sum = 0.0;
-    let mut k = 0;
-    while k < j {
-        sum += 0.5 * (table[k][c] + table[k + 1][c]);
-        k += 1;
-    }
-    let t = x - j as f64;
-    sum + t * table[j][c] + 0.5 * t * t * (table[j + 1][c] - table[j][c])
+    sum
 }
 
 /// Where the CIE's 1 nm tables start, nm.

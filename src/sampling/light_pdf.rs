@@ -1,6 +1,6 @@
 //! A wavelength pdf that follows a light: `p(λ) ∝ L(λ)·Σ꜀ α꜀·c̄꜀(λ)` over
-//! 380–730 nm (or `∝ S(λ)` alone, without the observer), tabulated
-//! exactly.
+//! a range, 380–730 nm with the assignment's observer by default (or
+//! `∝ S(λ)` alone, without the observer), tabulated exactly.
 //!
 //! Between consecutive breaks of the light and of the matching functions
 //! every factor is one polynomial (a clamped segment contributes its bound),
@@ -67,12 +67,12 @@ impl PiecewisePdf {
     /// `None` if it integrates to zero (or to something not finite) over
     /// 380–730 nm, with the assignment's observer.
     pub(crate) fn new(light: &dyn Spectrum, alpha: Option<[f64; 3]>) -> Option<Self> {
-        Self::new_in(light, alpha, StandardObserver::Assignment, WavelengthRange::ASSIGNMENT)
+        Self::new_over(light, alpha, StandardObserver::Assignment, WavelengthRange::ASSIGNMENT)
     }
 
     /// [`PiecewisePdf::new`] over `range` with `observer` (a CIE 1 nm
     /// table: lines between nanometres, so a piece per nanometre).
-    pub(crate) fn new_in(
+    pub(crate) fn new_over(
         light: &dyn Spectrum,
         alpha: Option<[f64; 3]>,
         observer: StandardObserver,
@@ -155,7 +155,7 @@ impl PiecewisePdf {
         Some(self.ends.partition_point(|&x| x <= lambda).saturating_sub(1).min(self.polys.len() - 1))
     }
 
-    /// The density at `lambda`, 1/nm; zero outside 380–730 nm ∩ the light.
+    /// The density at `lambda`, 1/nm; zero outside the range ∩ the light.
     pub(crate) fn pdf(&self, lambda: f64) -> f64 {
         self.piece(lambda)
             .map_or(0.0, |k| (value(&self.polys[k], lambda - self.ends[k]) / self.total()).max(0.0))

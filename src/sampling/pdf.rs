@@ -12,7 +12,9 @@
 //! - [`Visible`]: pbrt-v4's `SampleVisibleWavelengths` (Radziszewski et al.
 //!   2009), `p ∝ 1/cosh²(0.0072·(λ − 538))`, over pbrt-v4's 360–830 nm
 //!   (`Visible::VISIBLE`) or renormalised to 380–730 nm (`ASSIGNMENT`).
-//! - The tabulated ones below are over 380–730 nm.
+//! - The tabulated ones below are over 380–730 nm with the assignment's
+//!   observer, or over any range with a CIE 1 nm observer
+//!   ([`LightPdf::weighted_over`], [`LightPdf::spectrum_over`]).
 //! - [`LightPdf::light`]: `p ∝ L(λ)·(x̄ + ȳ + z̄)(λ)`, following a spiky
 //!   light's lines.
 //! - [`LightPdf::balanced`]: `p ∝ L(λ)·Σ꜀ c̄꜀(λ)/white꜀`, giving each
@@ -98,11 +100,11 @@ impl LightPdf {
     /// use speclab::data::lights;
     /// use speclab::sampling::pdf::{LightPdf, WavelengthPdf};
     /// use speclab::spectrum::{StandardObserver, WavelengthRange};
-    /// let e = LightPdf::weighted_in(&lights::E, [1.0; 3], StandardObserver::Cie1931, WavelengthRange::VISIBLE)?;
+    /// let e = LightPdf::weighted_over(&lights::E, [1.0; 3], StandardObserver::Cie1931, WavelengthRange::VISIBLE)?;
     /// assert!(e.pdf(370.0) > 0.0 && e.pdf(800.0) > 0.0 && e.pdf(850.0) == 0.0);
     /// # Ok::<(), speclab::Error>(())
     /// ```
-    pub fn weighted_in(
+    pub fn weighted_over(
         spectrum: &impl Spectrum,
         alpha: [f64; 3],
         observer: StandardObserver,
@@ -110,14 +112,15 @@ impl LightPdf {
     ) -> Result<Self, Error> {
         let range = observer.check(range)?;
         let alpha = alpha.map(|a| if a.is_finite() && a > 0.0 { a } else { 0.0 });
-        PiecewisePdf::new_in(spectrum, Some(alpha), observer, range)
+        PiecewisePdf::new_over(spectrum, Some(alpha), observer, range)
             .map(|table| LightPdf { table })
             .ok_or(Error::NoMass)
     }
 
-    /// [`LightPdf::spectrum`] over `range`: `p ∝ S(λ)` there.
-    pub fn spectrum_in(spectrum: &impl Spectrum, range: WavelengthRange) -> Result<Self, Error> {
-        PiecewisePdf::new_in(spectrum, None, StandardObserver::Assignment, range)
+    /// [`LightPdf::spectrum`] over `range`: `p ∝ S(λ)` there; an
+    /// [`Error::NoMass`] if `S` has none over it.
+    pub fn spectrum_over(spectrum: &impl Spectrum, range: WavelengthRange) -> Result<Self, Error> {
+        PiecewisePdf::new_over(spectrum, None, StandardObserver::Assignment, range)
             .map(|table| LightPdf { table })
             .ok_or(Error::NoMass)
     }

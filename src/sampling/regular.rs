@@ -61,6 +61,9 @@
 //! use speclab::spectrum::{DenseSpectrum, StandardObserver, WavelengthRange};
 //! let d65 = DenseSpectrum::new(&lights::CIE_D65);
 //! let xyz = RegularSpectrum::<32, BoxAverage<VisibleBand>>::box_average(&d65).to_xyz();
+//! // Values over one band multiply (the twin of the example above that does not compile).
+//! let g4 = RegularSpectrum::<32, BoxAverage<VisibleBand>>::box_average(&speclab::data::patches::G4);
+//! assert!(((RegularSpectrum::box_average(&d65) * g4).to_xyz().y) < xyz.y);
 //! let exact = reference::xyz_over(StandardObserver::Cie1931, WavelengthRange::VISIBLE, &[&d65])?;
 //! assert!((xyz.y / exact.y - 1.0).abs() < 1e-3);
 //! # Ok::<(), speclab::Error>(())
@@ -85,7 +88,9 @@ use crate::spectrum::{Float, Spectrum, StandardObserver, WavelengthRange};
 
 /// A range and an observer as a type, so that values bucketed over
 /// different ranges cannot be mixed.
-pub trait Band: Copy + Default + std::fmt::Debug + Send + Sync + 'static {
+pub trait Band:
+    Copy + Default + std::fmt::Debug + PartialEq + Eq + std::hash::Hash + Send + Sync + 'static
+{
     /// The range the buckets cut.
     const RANGE: WavelengthRange;
     /// The observer the buckets' weights come from.
@@ -93,7 +98,7 @@ pub trait Band: Copy + Default + std::fmt::Debug + Send + Sync + 'static {
 }
 
 /// The assignment's 380–730 nm with its observer (Appendix 2's).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct AssignmentBand;
 
 impl Band for AssignmentBand {
@@ -103,7 +108,7 @@ impl Band for AssignmentBand {
 
 /// 360–830 nm with the CIE 1931 2° observer's 1 nm table (pbrt-v4's and
 /// Mitsuba 3's range).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct VisibleBand;
 
 impl Band for VisibleBand {
@@ -116,15 +121,14 @@ impl Band for VisibleBand {
 pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
     /// The rule this type stands for.
     const RULE: BucketRule;
-    /// The range cut into buckets.
-    const RANGE: WavelengthRange;
-    /// The observer of the weights.
-    const OBSERVER: StandardObserver;
+    /// The range cut into buckets and the observer of the weights.
+    type Band: Band;
     /// The buckets' weights, computed at compile time: one row
     /// `[W/M·x̄ᵢ, W/M·ȳᵢ, W/M·z̄ᵢ, 0]` per bucket, with `c̄ᵢ` the matching
     /// functions bucketed by this rule (the width folded in, so that XYZ is
     /// `Σᵢ rowᵢ·valueᵢ`; `to_xyz` sums the same weights as columns).
-    const ROWS_F64: &'static [[f64; 4]; M] = &rows::<M>(Self::RULE, Self::OBSERVER, Self::RANGE);
+    const ROWS_F64: &'static [[f64; 4]; M] =
+        &rows::<M>(Self::RULE, <Self::Band as Band>::OBSERVER, <Self::Band as Band>::RANGE);
     /// The same, rounded to `f32`.
     const ROWS_F32: &'static [[f32; 4]; M] = &crate::spectrum::float::rounded(Self::ROWS_F64);
     /// The `M` bucket values of `s`.
@@ -135,7 +139,7 @@ pub trait Bucketing<const M: usize>: Copy + Default + std::fmt::Debug {
     /// [`RegularSpectrum::box_average`] for the values.
     #[must_use]
     fn wavelengths<T: Float>() -> FixedWavelengths<M, T> {
-        let lambda = const { centers::<M>(Self::RANGE) }.map(T::from_f64);
+        let lambda = const { centers::<M>(<Self::Band as Band>::RANGE) }.map(T::from_f64);
         let rows = T::choose(Self::ROWS_F32, Self::ROWS_F64);
         FixedWavelengths::from_weighted(Weighted::at(lambda).fixed(|c, i| rows[i][c]))
     }
@@ -153,17 +157,16 @@ impl<const M: usize, B: Bucketing<M>> Columns<M, B> {
 
 /// Point samples at bucket centers ([`BucketRule::Center`]) over the
 /// band `R`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Center<R: Band = AssignmentBand>(PhantomData<R>);
 
 /// Exact means over each bucket ([`BucketRule::BoxAverage`]) of the band `R`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct BoxAverage<R: Band = AssignmentBand>(PhantomData<R>);
 
 impl<const M: usize, R: Band> Bucketing<M> for Center<R> {
     const RULE: BucketRule = BucketRule::Center;
-    const RANGE: WavelengthRange = R::RANGE;
-    const OBSERVER: StandardObserver = R::OBSERVER;
+    type Band = R;
     /// The spectrum at the `M` centers, evaluated side by side.
     #[inline]
     fn buckets<S: Spectrum + ?Sized>(s: &S) -> [f64; M] {
@@ -175,8 +178,7 @@ impl<const M: usize, R: Band> Bucketing<M> for Center<R> {
 
 impl<const M: usize, R: Band> Bucketing<M> for BoxAverage<R> {
     const RULE: BucketRule = BucketRule::BoxAverage;
-    const RANGE: WavelengthRange = R::RANGE;
-    const OBSERVER: StandardObserver = R::OBSERVER;
+    type Band = R;
     #[inline]
     fn buckets<S: Spectrum + ?Sized>(s: &S) -> [f64; M] {
         let mut out = [0.0; M];
@@ -251,7 +253,7 @@ impl<const M: usize, B: Bucketing<M>, T: Float> RegularSpectrum<M, B, T> {
     /// The center wavelength of bucket `i`, nm.
     #[must_use]
     pub fn lambda(i: usize) -> f64 {
-        center_in(B::RANGE, i, M)
+        center_in(<B::Band as Band>::RANGE, i, M)
     }
 
     /// The Riemann sum `W/M · Σ valueᵢ · c̄ᵢ`, the bucketed observer times

@@ -33,7 +33,7 @@ fn exact(factors: &[&dyn Spectrum]) -> Xyz {
 #[test]
 fn a_lights_pdf_over_360_830_is_its_product_with_the_observer() {
     let d65 = d65_held();
-    let p = LightPdf::weighted_in(&d65, [1.0; 3], CIE, VISIBLE).expect("bright");
+    let p = LightPdf::weighted_over(&d65, [1.0; 3], CIE, VISIBLE).expect("bright");
     let total = exact(&[&d65]).to_array().iter().sum::<f64>();
     for lambda in [360.0, 365.5, 400.25, 555.0, 700.0, 779.5, 805.0, 829.5] {
         let want = d65.eval(lambda) * CIE.xyz_bar(lambda).iter().sum::<f64>() / total;
@@ -48,9 +48,9 @@ fn a_lights_pdf_over_360_830_is_its_product_with_the_observer() {
         let lambda = p.sample(u);
         assert!(VISIBLE.contains(lambda) && (p.cdf(lambda).unwrap() - u).abs() < 1e-12);
     }
-    let outside = LightPdf::weighted_in(&d65, [1.0; 3], CIE, WavelengthRange::new(300.0, 830.0).unwrap());
+    let outside = LightPdf::weighted_over(&d65, [1.0; 3], CIE, WavelengthRange::new(300.0, 830.0).unwrap());
     assert!(matches!(outside, Err(speclab::Error::RangeOutside { .. })));
-    let own = LightPdf::spectrum_in(&d65, VISIBLE).expect("bright");
+    let own = LightPdf::spectrum_over(&d65, VISIBLE).expect("bright");
     let ratio = d65.eval(805.0) / d65.eval(555.0);
     assert!(ratio > 0.0 && (own.pdf(805.0) / own.pdf(555.0) - ratio).abs() < 1e-12);
 }
@@ -60,7 +60,7 @@ fn a_lights_pdf_over_360_830_is_its_product_with_the_observer() {
 #[test]
 fn hero_estimates_over_360_830_are_unbiased() {
     let (d65, g4) = (DenseSpectrum::new(&d65_held()), DenseSpectrum::new(&patches::G4));
-    let p = LightPdf::weighted_in(&d65, [1.0; 3], CIE, VISIBLE).expect("bright");
+    let p = LightPdf::weighted_over(&d65, [1.0; 3], CIE, VISIBLE).expect("bright");
     let truth = exact(&[&d65, &g4]);
     let (n, mut rng) = (4096, StdRng::seed_from_u64(5));
     let estimates: Vec<[f64; 3]> = (0..n)
@@ -112,8 +112,9 @@ fn rules_reach_360_830() {
 /// 380–730 nm. Integrated as a 360–830 nm renderer integrates (the CIE
 /// 1931 1 nm table), a table's albedo moves by little: on the 9³ grid,
 /// ΔE00 (each colour in Lab of its own white of the space's illuminant)
-/// at most 0.25 in every built-in space, 0.02 on average. Prints the
-/// figures (`cargo test --test properties rgb_albedos -- --nocapture`).
+/// 0.007 on average, and at worst the figures docs/color.md quotes
+/// (regression snapshot, to 0.001). Prints them
+/// (`cargo test --test properties rgb_albedos -- --nocapture`).
 #[test]
 fn rgb_albedos_move_little_under_the_cie_observer() {
     use speclab::color::{RgbSpace, difference::ciede2000, lab::lab};
@@ -133,7 +134,18 @@ fn rgb_albedos_move_little_under_the_cie_observer() {
             .collect();
         let (worst, mean) = (shifts.iter().copied().fold(0.0, f64::max), shifts.iter().sum::<f64>() / 729.0);
         println!("{:<11} ΔE00 mean {mean:.4}, worst {worst:.3}", space.name());
-        assert!(worst < 0.25 && mean < 0.02 && worst > 0.0, "{}: mean {mean}, worst {worst}", space.name());
+        let quoted = match space.name() {
+            "sRGB" => 0.083,
+            "Display P3" => 0.120,
+            "Rec.2020" => 0.141,
+            "ACES2065-1" => 0.144,
+            _ => 0.194,
+        };
+        assert!(
+            (worst - quoted).abs() < 1e-3 && mean < 0.0075,
+            "{}: mean {mean}, worst {worst}",
+            space.name()
+        );
     }
 }
 
@@ -146,7 +158,7 @@ fn rgb_albedos_move_little_under_the_cie_observer() {
 fn rules_fitted_over_360_830() {
     use speclab::sampling::fitted::{ANCHOR_TOLERANCE, FittedRules};
     let d65 = d65_held();
-    let rules = FittedRules::new_in(&[&d65], CIE, VISIBLE).expect("bright");
+    let rules = FittedRules::new_over(&[&d65], CIE, VISIBLE).expect("bright");
     let (rule, coarse) = (rules.rule(10).unwrap(), rules.rule(3).unwrap());
     assert!(rule.lambda().iter().all(|&l| VISIBLE.contains(l)) && rule.m() == 10);
     let white = exact(&[&d65]);
@@ -161,15 +173,16 @@ fn rules_fitted_over_360_830() {
             .fold(0.0, f64::max)
     };
     assert!(error(rule) < 0.01 && error(rule) < error(coarse), "{} {}", error(rule), error(coarse));
-    assert_eq!(Rule::fit_in(&[&d65], 10, CIE, VISIBLE).unwrap(), *rule);
+    assert_eq!(Rule::fit_over(&[&d65], 10, CIE, VISIBLE).unwrap(), *rule);
     let assignment =
-        Rule::fit_in(&[&lights::F11], 6, StandardObserver::Assignment, WavelengthRange::ASSIGNMENT);
+        Rule::fit_over(&[&lights::F11], 6, StandardObserver::Assignment, WavelengthRange::ASSIGNMENT);
     assert_eq!(assignment.unwrap(), Rule::fit(&[&lights::F11], 6).unwrap());
-    let outside = Rule::fit_in(&[&d65], 10, CIE, WavelengthRange::new(300.0, 830.0).unwrap()).unwrap_err();
+    let outside = Rule::fit_over(&[&d65], 10, CIE, WavelengthRange::new(300.0, 830.0).unwrap()).unwrap_err();
     assert!(matches!(outside, speclab::Error::RangeOutside { .. }), "{outside}");
     for (a, b) in [(360.5, 830.0), (360.0, 829.5)] {
-        let e = Rule::fit_in(&[&d65], 10, CIE, WavelengthRange::new(a, b).unwrap()).unwrap_err().to_string();
-        assert_eq!(e, format!("expected a range with whole-nanometre ends, found {a}–{b} nm"));
+        let e =
+            Rule::fit_over(&[&d65], 10, CIE, WavelengthRange::new(a, b).unwrap()).unwrap_err().to_string();
+        assert_eq!(e, format!("expected a range with ends on 0, 1, 2, … nm, found {a}–{b} nm"));
     }
-    assert!(Rule::fit_in(&[&d65], 0, CIE, VISIBLE).is_err());
+    assert!(Rule::fit_over(&[&d65], 0, CIE, VISIBLE).is_err());
 }

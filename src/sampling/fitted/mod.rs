@@ -87,7 +87,7 @@ impl Rule {
     /// that observer's XYZ over it (a renderer's 360–830 nm with the CIE
     /// 1931 observer). The prior is the same formulas read over the range.
     /// An [`Error::RangeOutside`] for a range beyond the observer's data, an
-    /// [`Error::WholeNanometres`] for ends off whole nanometres; otherwise
+    /// [`Error::OffGrid`] for ends off whole nanometres; otherwise
     /// errors as `fit`'s.
     ///
     /// ```
@@ -95,20 +95,20 @@ impl Rule {
     /// use speclab::sampling::{reference, rule::Rule};
     /// use speclab::spectrum::{StandardObserver, WavelengthRange};
     /// let (cie, visible) = (StandardObserver::Cie1931, WavelengthRange::VISIBLE);
-    /// let rule = Rule::fit_in(&[&lights::E], 8, cie, visible)?;
+    /// let rule = Rule::fit_over(&[&lights::E], 8, cie, visible)?;
     /// let exact = reference::xyz_over(cie, visible, &[&lights::E, &patches::G4])?;
     /// let fitted = rule.xyz_of_product(&[&lights::E, &patches::G4]);
     /// assert!((fitted.y / exact.y - 1.0).abs() < 0.01);
     /// # Ok::<(), speclab::Error>(())
     /// ```
-    pub fn fit_in<S: Spectrum>(
+    pub fn fit_over<S: Spectrum>(
         lights: &[S],
         m: usize,
         observer: StandardObserver,
         range: WavelengthRange,
     ) -> Result<Rule, Error> {
         check_m("a fitted wavelength count", m)?;
-        Ok(fit(&Problem::new(&as_dyn(lights), Grid::new(range, observer)?)?, m).swap_remove(0))
+        Ok(fit(&Problem::new(&as_dyn(lights), Grid::new(observer, range)?)?, m).swap_remove(0))
     }
 
     /// One rule per light, all at the same `m` wavelengths, each with
@@ -183,13 +183,13 @@ impl FittedRules {
     }
 
     /// The rules of `lights` over `range` with `observer`, as
-    /// [`Rule::fit_in`] fits them (its errors).
-    pub fn new_in<S: Spectrum>(
+    /// [`Rule::fit_over`] fits them (its errors).
+    pub fn new_over<S: Spectrum>(
         lights: &[S],
         observer: StandardObserver,
         range: WavelengthRange,
     ) -> Result<Self, Error> {
-        Ok(Self::of_problem(Problem::new(&as_dyn(lights), Grid::new(range, observer)?)?))
+        Ok(Self::of_problem(Problem::new(&as_dyn(lights), Grid::new(observer, range)?)?))
     }
 
     fn of_problem(problem: Problem) -> Self {

@@ -11,7 +11,8 @@
 //! Both take the same path: the built-in rules are the rules fitted to the
 //! prior's 512 reflectances as surfaces (tested).
 
-use std::sync::{Mutex, OnceLock};
+use std::borrow::Cow;
+use std::sync::OnceLock;
 
 use crate::error::Error;
 use crate::sampling::prior::{PriorPath, draw_paths, prior};
@@ -34,12 +35,12 @@ impl Grid {
     pub(crate) const ASSIGNMENT: Grid =
         Grid { range: WavelengthRange::ASSIGNMENT, observer: StandardObserver::Assignment };
 
-    /// A grid over `range` with `observer`: an error unless the range has
+    /// A grid with `observer` over `range`: an error unless the range has
     /// whole-nanometre ends within the observer's data.
-    pub(crate) fn new(range: WavelengthRange, observer: StandardObserver) -> Result<Grid, Error> {
+    pub(crate) fn new(observer: StandardObserver, range: WavelengthRange) -> Result<Grid, Error> {
         let range = observer.check(range)?;
         if range.min().fract() != 0.0 || range.max().fract() != 0.0 {
-            return Err(Error::WholeNanometres { range: [range.min(), range.max()] });
+            return Err(Error::OffGrid { range: [range.min(), range.max()], first: 0.0, step: 1.0 });
         }
         Ok(Grid { range, observer })
     }
@@ -64,12 +65,15 @@ impl Grid {
     }
 
     /// The nodes the targets are computed on, with their weights:
-    /// 16-point Gauss–Legendre on each 5 nm piece for the assignment's
-    /// observer (its data's grid), 4-point on each nanometre for a 1 nm
-    /// table (lines between nanometres).
+    /// 16-point Gauss–Legendre on pieces of at most 5 nm for the
+    /// assignment's observer (its data's grid), 4-point on each nanometre
+    /// for a 1 nm table (lines between nanometres).
     fn nodes(self) -> (Vec<f64>, Vec<f64>) {
-        let (piece, points) = if self.observer.table().is_some() { (1.0, 4) } else { (5.0, 16) };
-        let pieces = (self.range.width() / piece).round() as usize;
+        let (nominal, points) = if self.observer.table().is_some() { (1.0, 4) } else { (5.0, 16) };
+        // Whole pieces of at most the nominal width covering the range
+        // (380–730 nm: seventy of 5 nm).
+        let pieces = (self.range.width() / nominal).ceil().max(1.0) as usize;
+        let piece = self.range.width() / pieces as f64;
         let (mut lambda, mut weight) = (Vec::new(), Vec::new());
         for i in 0..pieces {
             let (mid, half) = (self.range.min() + piece * i as f64 + 0.5 * piece, 0.5 * piece);
@@ -92,6 +96,7 @@ pub const MAX_SURFACES: usize = 4096;
 pub const MAX_REFLECTANCE: f64 = 1e3;
 
 /// A fit's reflectances and what the fit needs of them.
+#[derive(Clone)]
 pub(crate) struct Moments {
     /// The candidates and the observer.
     pub(super) grid: Grid,
@@ -115,27 +120,26 @@ pub(crate) struct Moments {
 
 impl Moments {
     /// The built-in prior's on `grid` (`prior.rs`; read over the grid's
-    /// range), computed on first use per grid.
-    pub(crate) fn builtin(grid: Grid) -> &'static Moments {
-        static ASSIGNMENT: OnceLock<Moments> = OnceLock::new();
-        static OTHERS: Mutex<Vec<&'static Moments>> = Mutex::new(Vec::new());
-        let compute = || {
-            let formulas: Vec<_> = prior().iter().map(|r| FnSpectrum(|lambda| r.value(lambda))).collect();
-            let members: Vec<&dyn Spectrum> = formulas.iter().map(|r| r as &dyn Spectrum).collect();
-            // The prior's members lie in (0, 1) (prior.rs's test): never an error.
-            let (at_candidates, at_nodes) = sample(&members, grid).unwrap_or_else(|_| unreachable!());
-            Moments::new(grid, &at_candidates, at_nodes)
-        };
-        if grid == Grid::ASSIGNMENT {
-            return ASSIGNMENT.get_or_init(compute);
+    /// range): kept for the assignment's grid and for 360–830 nm with
+    /// either CIE observer (computed on first use), made afresh for
+    /// any other grid.
+    pub(crate) fn builtin(grid: Grid) -> Cow<'static, Moments> {
+        static KEPT: [OnceLock<Moments>; 3] = [const { OnceLock::new() }; 3];
+        let visible = |observer| Grid { range: WavelengthRange::VISIBLE, observer };
+        let kept = [Grid::ASSIGNMENT, visible(StandardObserver::Cie1931), visible(StandardObserver::Cie1964)];
+        match kept.iter().position(|&g| g == grid) {
+            Some(i) => Cow::Borrowed(KEPT[i].get_or_init(|| Moments::prior(grid))),
+            None => Cow::Owned(Moments::prior(grid)),
         }
-        let mut others = OTHERS.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        if let Some(m) = others.iter().find(|m| m.grid == grid) {
-            return m;
-        }
-        let m: &'static Moments = Box::leak(Box::new(compute()));
-        others.push(m);
-        m
+    }
+
+    /// The prior's moments on `grid`.
+    fn prior(grid: Grid) -> Moments {
+        let formulas: Vec<_> = prior().iter().map(|r| FnSpectrum(|lambda| r.value(lambda))).collect();
+        let members: Vec<&dyn Spectrum> = formulas.iter().map(|r| r as &dyn Spectrum).collect();
+        // The prior's members lie in (0, 1) (prior.rs's test): never an error.
+        let (at_candidates, at_nodes) = sample(&members, grid).unwrap_or_else(|_| unreachable!());
+        Moments::new(grid, &at_candidates, at_nodes)
     }
 
     /// The moments of `surfaces` on `grid`: each alone, then products of

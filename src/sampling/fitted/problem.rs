@@ -61,12 +61,12 @@ impl Problem {
     /// one has no power the observer sees (a white that is zero, or not
     /// finite, in every channel).
     pub(crate) fn new(lights: &[&dyn Spectrum], grid: Grid) -> Result<Self, Error> {
-        Self::grouped(lights, false, Moments::builtin(grid))
+        Self::grouped(lights, false, &Moments::builtin(grid))
     }
 
     /// One group per light: shared nodes, each light its own weights.
     pub(crate) fn each(lights: &[&dyn Spectrum], grid: Grid) -> Result<Self, Error> {
-        Self::grouped(lights, true, Moments::builtin(grid))
+        Self::grouped(lights, true, &Moments::builtin(grid))
     }
 
     /// One group, all of `lights` together, over `surfaces` instead of the
