@@ -91,13 +91,15 @@ impl Rule {
     /// errors as `fit`'s.
     ///
     /// ```
-    /// use speclab::data::{lights, patches};
+    /// use speclab::data::lights;
     /// use speclab::sampling::{reference, rule::Rule};
-    /// use speclab::spectrum::{StandardObserver, WavelengthRange};
+    /// use speclab::spectrum::{FnSpectrum, StandardObserver, WavelengthRange};
     /// let (cie, visible) = (StandardObserver::Cie1931, WavelengthRange::VISIBLE);
+    /// let red = FnSpectrum(|l: f64| 0.5 + 0.4 * ((l - 600.0) / 40.0).tanh()); // defined over 360–830 nm
     /// let rule = Rule::fit_over(&[&lights::E], 8, cie, visible)?;
-    /// let exact = reference::xyz_over(cie, visible, &[&lights::E, &patches::G4])?;
-    /// let fitted = rule.xyz_of_product(&[&lights::E, &patches::G4]);
+    /// let exact = reference::xyz_over(cie, visible, &[&lights::E, &red])?;
+    /// let fitted = rule.xyz_of_product(&[&lights::E, &red]);
+    /// assert!(rule.lambda().iter().all(|&l| visible.contains(l)));
     /// assert!((fitted.y / exact.y - 1.0).abs() < 0.01);
     /// # Ok::<(), speclab::Error>(())
     /// ```
