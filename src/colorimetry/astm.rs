@@ -26,9 +26,7 @@
 use super::Tristimulus;
 use crate::color::Xyz;
 use crate::error::Error;
-#[cfg(test)]
-use crate::spectrum::StandardObserver;
-use crate::spectrum::{Spectrum, WavelengthRange};
+use crate::spectrum::{Spectrum, StandardObserver, WavelengthRange};
 
 /// The largest step, nm.
 pub const MAX_STEP: usize = 20;
@@ -66,14 +64,7 @@ impl Weights {
     /// three weights, an [`Error::OffGrid`] for a range with ends off the
     /// table's nanometres.
     pub fn e2022_unscaled(light: &(impl Spectrum + ?Sized), grid: Tristimulus) -> Result<Self, Error> {
-        let observer = grid.observer();
-        let Some((first, 1.0, cmf)) = observer.table() else {
-            return Err(Error::UnknownName {
-                what: "an observer with a 1 nm table",
-                expected: &["CIE 1931", "CIE 1964"],
-                found: observer.name().to_string(),
-            });
-        };
+        let (first, cmf) = one_nm_table(grid.observer())?;
         let step = grid.step();
         if !(step.fract() == 0.0 && (1.0..=MAX_STEP as f64).contains(&step)) {
             return Err(Error::Step { step, width: MAX_STEP as f64 });
@@ -168,6 +159,19 @@ impl Weights {
             (0..3).for_each(|c| sum[c] += w[c] * r);
         }
         Xyz::from(sum)
+    }
+}
+
+/// The observer's 1 nm table (its first wavelength and rows), or an
+/// [`Error::UnknownName`] for an observer without one.
+pub(super) fn one_nm_table(observer: StandardObserver) -> Result<(f64, &'static [[f64; 3]]), Error> {
+    match observer.table() {
+        Some((first, 1.0, rows)) => Ok((first, rows)),
+        _ => Err(Error::UnknownName {
+            what: "an observer with a 1 nm table",
+            expected: &["CIE 1931", "CIE 1964"],
+            found: observer.name().to_string(),
+        }),
     }
 }
 

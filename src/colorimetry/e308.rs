@@ -34,7 +34,7 @@
 //! ```
 
 use super::Tristimulus;
-use super::astm::Weights;
+use super::astm::{Weights, one_nm_table};
 use crate::color::Xyz;
 use crate::error::Error;
 use crate::spectrum::{Constant, Spectrum, Sprague, StandardObserver, WavelengthRange};
@@ -124,13 +124,7 @@ impl Practice {
                 found: step.to_string(),
             });
         }
-        if observer.table().is_none() {
-            return Err(Error::UnknownName {
-                what: "an observer with a 1 nm table",
-                expected: &["CIE 1931", "CIE 1964"],
-                found: observer.name().to_string(),
-            });
-        }
+        one_nm_table(observer)?;
         let range = self.range(observer)?;
         // At 10 or 20 nm the last sample is off a multiple of 10 nm when
         // the first is.
