@@ -129,11 +129,11 @@ impl Practice {
         // At 10 or 20 nm the last sample is off a multiple of 10 nm when
         // the first is.
         let off_tens = measured.range().min() % 10.0 != 0.0;
-        let integrate = |step: f64| integrate(Tristimulus::new(observer, range, step)?, light, measured);
+        let every = |step: f64| integrate(Tristimulus::new(observer, range, step)?, light, measured);
         match step {
-            10.0 | 20.0 if off_tens => integrate(1.0),
-            1.0 => integrate(1.0),
-            5.0 if self.omit_5nm => integrate(5.0),
+            10.0 | 20.0 if off_tens => every(1.0),
+            1.0 => every(1.0),
+            5.0 if self.omit_5nm => every(5.0),
             _ => {
                 let (first, values) = within(measured, range)?;
                 let (step, values) = if step == 20.0 && self.interpolate_20nm {
