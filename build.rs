@@ -35,6 +35,7 @@ fn main() {
     let basis = ["S0", "S1", "S2"].map(|s| (format!("data/daylight/{s}.csv"), s.to_string()));
     out += &module("daylight", basis, Role::Basis).unwrap_or_else(|e| fail(&e));
     out += &observers().unwrap_or_else(|e| fail(&e));
+    out += &sensors().unwrap_or_else(|e| fail(&e));
     out += &conductors().unwrap_or_else(|e| fail(&e));
     out += &glasses().unwrap_or_else(|e| fail(&e));
     out += &matrix().unwrap_or_else(|e| fail(&e));
@@ -58,6 +59,31 @@ fn observers() -> Result<String, String> {
         let table = speclab_tables::observer::parse_observer(&text, &path).map_err(|e| e.to_string())?;
         code += &table.source(name);
     }
+    Ok(code + "}\n")
+}
+
+/// Every camera of `data/sensors/` (three response curves at a uniform
+/// step), as observers are, and `ALL`: `(name, first, step, rows)`.
+fn sensors() -> Result<String, String> {
+    let mut code = String::from("pub mod sensors {\n");
+    let mut all = Vec::new();
+    println!("cargo:rerun-if-changed=data/sensors");
+    for (name, path) in folder("data/sensors", ".csv") {
+        let shown = path.display().to_string();
+        println!("cargo:rerun-if-changed={shown}");
+        let text = std::fs::read_to_string(&path).map_err(|e| format!("{shown}: {e}"))?;
+        let table = speclab_tables::observer::parse_observer(&text, &shown).map_err(|e| e.to_string())?;
+        let rust = name.to_uppercase();
+        code += &table.source(&rust);
+        all.push(format!("({name:?}, {rust}_FIRST, {rust}_STEP, &{rust})"));
+    }
+    let _ = writeln!(
+        code,
+        "/// Every camera: `(name, first nm, step nm, [r, g, b] rows)`.\n\
+         pub static ALL: [(&str, f64, f64, &[[f64; 3]]); {}] = [{}];",
+        all.len(),
+        all.join(", ")
+    );
     Ok(code + "}\n")
 }
 

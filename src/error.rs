@@ -192,6 +192,27 @@ pub enum Error {
         /// The range summed over, nm.
         range: [f64; 2],
     },
+    /// A sensor's response curve that is negative or not finite.
+    Response {
+        /// The curve: 0, 1, 2 for r, g, b.
+        channel: usize,
+        /// Where, nm.
+        lambda: f64,
+        /// The value found there.
+        value: f64,
+    },
+    /// A pixel outside an image, or an image whose size is not
+    /// `width × height × channels` values.
+    Pixel {
+        /// What was wrong: `the pixel (9, 2)`, `the image's values`.
+        what: String,
+        /// What was expected: `within 8 × 8`, `64 values`.
+        expected: String,
+    },
+    /// A spectral image that cannot be developed as asked: an emissive
+    /// image with a light, a reflective one without, wavelengths that do
+    /// not increase.
+    Develop(&'static str),
     /// A name that names none of the choices (a built-in light, a pdf, …).
     UnknownName {
         /// What was looked up, e.g. `a built-in light`.
@@ -264,6 +285,13 @@ impl fmt::Display for Error {
             Error::Daylight { kelvin } => {
                 write!(f, "expected a daylight temperature from 4000 to 25000 K, found {kelvin} K")
             }
+            Error::Response { channel, lambda, value } => write!(
+                f,
+                "a sensor's {} curve at {lambda} nm: expected a finite non-negative response, found {value}",
+                ["r", "g", "b"].get(*channel).unwrap_or(&"?")
+            ),
+            Error::Pixel { what, expected } => write!(f, "{what}: expected {expected}"),
+            Error::Develop(why) => f.write_str(why),
             Error::Weight { index, weight } => {
                 write!(f, "term {index}: expected a finite non-negative weight, found {weight}")
             }

@@ -100,6 +100,8 @@ mod doc_pages {
     pub struct Color;
     #[doc = include_str!("../docs/convergence.md")]
     pub struct Convergence;
+    #[doc = include_str!("../docs/film.md")]
+    pub struct Film;
     #[doc = include_str!("../docs/fitted.md")]
     pub struct Fitted;
     #[doc = include_str!("../docs/grid.md")]
@@ -121,6 +123,7 @@ mod doc_pages {
 pub mod color;
 pub mod colorimetry;
 pub mod error;
+pub mod film;
 pub mod io;
 mod names;
 pub mod sampling;

@@ -16,6 +16,18 @@ pub fn mul(m: &Matrix, v: [f64; 3]) -> [f64; 3] {
     m.map(|row| row[0] * v[0] + row[1] * v[1] + row[2] * v[2])
 }
 
+/// `a · b`.
+#[must_use]
+pub fn product(a: &Matrix, b: &Matrix) -> Matrix {
+    std::array::from_fn(|r| std::array::from_fn(|c| (0..3).map(|k| a[r][k] * b[k][c]).sum()))
+}
+
+/// The determinant of `m`.
+#[must_use]
+pub const fn determinant(m: &Matrix) -> f64 {
+    m[0][0] * cofactor(m, 0, 0) + m[0][1] * cofactor(m, 0, 1) + m[0][2] * cofactor(m, 0, 2)
+}
+
 /// The inverse of `m` by cofactors (all zero if `m` is singular); a
 /// `const fn`, so inverses of constant matrices are constants.
 #[must_use]

@@ -218,6 +218,13 @@ pub mod observers {
     pub use super::generated::observers::*;
 }
 
+/// Seventeen cameras' r, g, b response curves at 10 nm, 380–720 nm
+/// (pbrt-v4's PhysLight data, `data/sensors/`; read them through
+/// [`crate::film::Sensor::camera`]).
+pub mod sensors {
+    pub use super::generated::sensors::*;
+}
+
 pub(crate) use generated::XYZ_TO_SRGB;
 pub(crate) use generated::cie1931::{
     CIE_X_BREAKS, CIE_X_COEFFS, CIE_X_LAMBDA, CIE_Y_BREAKS, CIE_Y_COEFFS, CIE_Y_LAMBDA, CIE_Z_BREAKS,

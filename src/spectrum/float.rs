@@ -128,6 +128,16 @@ pub(crate) mod sealed {
         ) -> &'a [[Self; N]; R];
         /// The row of this precision out of a pair.
         fn choose_row<'a, const N: usize>(f32s: &'a [f32; N], f64s: &'a [f64; N]) -> &'a [Self; N];
+        /// A film's splat, in this precision (four lanes at a time in
+        /// `f32`): each wavelength's bucket `⌊(λ − min)·per⌋` clamped to
+        /// `0..=last` (a NaN to 0), and what it adds there, `w·v` as
+        /// `f64`, or 0 where `w` is 0 or `λ` is outside `[min, max]`.
+        fn splat_lanes<const K: usize>(
+            lambda: &[Self; K],
+            wv: [[Self; 2]; K],
+            range: [Self; 3],
+            last: usize,
+        ) -> [(usize, f64); K];
     }
 
     /// Wavelengths (nm) and the values a spectrum fills at them, in one of the
@@ -226,6 +236,35 @@ impl sealed::Sealed for f32 {
     fn choose_row<'a, const N: usize>(f32s: &'a [f32; N], _: &'a [f64; N]) -> &'a [f32; N] {
         f32s
     }
+    #[inline(always)]
+    fn splat_lanes<const K: usize>(
+        lambda: &[f32; K],
+        wv: [[f32; 2]; K],
+        [min, max, per]: [f32; 3],
+        last: usize,
+    ) -> [(usize, f64); K] {
+        use wide::{CmpGe, CmpLe, CmpNe, f32x4};
+        let mut out = [(0, 0.0); K];
+        let (top, chunks) = (f32x4::splat(last as f32), K / 4);
+        for c in 0..chunks {
+            let at = 4 * c;
+            let l = f32x4::new([lambda[at], lambda[at + 1], lambda[at + 2], lambda[at + 3]]);
+            let w = f32x4::new([wv[at][0], wv[at + 1][0], wv[at + 2][0], wv[at + 3][0]]);
+            let v = f32x4::new([wv[at][1], wv[at + 1][1], wv[at + 2][1], wv[at + 3][1]]);
+            // max puts a NaN at 0; the clamp keeps the truncation in range.
+            let x = ((l - f32x4::splat(min)) * f32x4::splat(per)).fast_max(f32x4::ZERO).fast_min(top);
+            let adds = l.cmp_ge(f32x4::splat(min)) & l.cmp_le(f32x4::splat(max)) & w.cmp_ne(f32x4::ZERO);
+            let (i, value) = (x.fast_trunc_int().to_array(), adds.blend(w * v, f32x4::ZERO).to_array());
+            (0..4).for_each(|j| out[4 * c + j] = ((i[j] as usize).min(last), f64::from(value[j])));
+        }
+        for j in 4 * chunks..K {
+            let (l, [w, v]) = (lambda[j], wv[j]);
+            let adds = l >= min && l <= max && w != 0.0;
+            out[j] =
+                ((((l - min) * per).max(0.0) as usize).min(last), if adds { f64::from(w * v) } else { 0.0 });
+        }
+        out
+    }
 }
 
 impl Float for f64 {
@@ -292,6 +331,19 @@ impl sealed::Sealed for f64 {
     #[inline(always)]
     fn choose_row<'a, const N: usize>(_: &'a [f32; N], f64s: &'a [f64; N]) -> &'a [f64; N] {
         f64s
+    }
+    #[inline(always)]
+    fn splat_lanes<const K: usize>(
+        lambda: &[f64; K],
+        wv: [[f64; 2]; K],
+        [min, max, per]: [f64; 3],
+        last: usize,
+    ) -> [(usize, f64); K] {
+        std::array::from_fn(|j| {
+            let (l, [w, v]) = (lambda[j], wv[j]);
+            let adds = (l >= min) & (l <= max) & (w != 0.0);
+            ((((l - min) * per).max(0.0) as usize).min(last), if adds { w * v } else { 0.0 })
+        })
     }
 }
 

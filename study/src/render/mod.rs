@@ -29,6 +29,7 @@
 //! ```
 
 pub mod exact;
+pub mod film;
 pub mod run;
 pub mod survey;
 pub mod tracer;
@@ -214,7 +215,7 @@ fn texture_colours() -> Vec<LinearRgb> {
 }
 
 /// A pixel's seed: SplitMix64's finaliser of the pass and the pixel.
-fn seed(pass: u64, pixel: usize) -> u64 {
+pub(crate) fn seed(pass: u64, pixel: usize) -> u64 {
     mix(pass.wrapping_mul(crate::sampling::seed::GOLDEN) ^ (pixel as u64).wrapping_add(0xD1B5_4A32_D192_ED03))
         | 1
 }

@@ -193,19 +193,50 @@ fn cosine(n: V3, rng: &mut Rng) -> V3 {
     add(add(scale(t, x), scale(b, y)), scale(n, z))
 }
 
+/// Where a path's light goes: each light's contribution through a
+/// throughput, times a scalar factor.
+pub trait Sink<P: Carry> {
+    /// Light `light` seen through throughput `beta`, times `factor`.
+    fn emitted(&mut self, paint: &P, path: &P::Path, light: usize, beta: P::Value, factor: f64);
+}
+
+/// The XYZ of what a path's lights gave (the renders' sink).
+impl<P: Carry> Sink<P> for Xyz {
+    #[inline(always)]
+    fn emitted(&mut self, paint: &P, path: &P::Path, light: usize, beta: P::Value, factor: f64) {
+        *self += paint.emitted(path, light, beta) * factor;
+    }
+}
+
 /// One camera path through `(x, y)` in [0, 1]² of the image: its XYZ and
 /// the number of surfaces it met; what it met goes to `record`.
 pub fn trace<P: Carry>(
     scene: &Scene,
     paint: &P,
     path: &P::Path,
-    (x, y): (f64, f64),
+    at: (f64, f64),
     rng: &mut Rng,
     record: &mut impl Record,
 ) -> (Xyz, u32) {
+    let mut radiance = Xyz::ZERO;
+    let vertices = trace_into(scene, paint, path, at, rng, record, &mut radiance);
+    (radiance, vertices)
+}
+
+/// [`trace`], what the lights give going to `sink`; the number of
+/// surfaces met.
+pub fn trace_into<P: Carry>(
+    scene: &Scene,
+    paint: &P,
+    path: &P::Path,
+    (x, y): (f64, f64),
+    rng: &mut Rng,
+    record: &mut impl Record,
+    sink: &mut impl Sink<P>,
+) -> u32 {
     let (origin, mut dir) = ([0.5, 0.5, 0.02], normalize([x - 0.5, 0.5 - y, 0.72]));
     let mut origin = origin;
-    let (mut beta, mut radiance, mut vertices) = (paint.one(), Xyz::ZERO, 0);
+    let (mut beta, mut vertices) = (paint.one(), 0);
     // The scalar part of beta (Russian roulette's 1/q), for the record.
     let mut factor = 1.0;
     let (count, half) = (scene.lights.len(), light_half(scene.lights.len()));
@@ -214,7 +245,7 @@ pub fn trace<P: Carry>(
         vertices += 1;
         if let Some(light) = hit.light {
             if depth == 0 {
-                radiance += paint.emitted(path, light, beta);
+                sink.emitted(paint, path, light, beta, 1.0);
                 record.light(light, 0, 1.0);
             }
             break;
@@ -236,7 +267,7 @@ pub fn trace<P: Carry>(
         if cos_surface > 0.0 && cos_light > 0.0 && scene.visible(add(hit.point, scale(n, 1e-6)), on_light) {
             let area = 4.0 * half * half;
             let geometry = count as f64 * cos_surface * cos_light * area / (std::f64::consts::PI * d2);
-            radiance += paint.emitted(path, light, beta * albedo) * geometry;
+            sink.emitted(paint, path, light, beta * albedo, geometry);
             record.light(light, depth + 1, factor * geometry);
         }
         beta *= albedo;
@@ -256,5 +287,5 @@ pub fn trace<P: Carry>(
         origin = add(hit.point, scale(n, 1e-6));
         dir = cosine(n, rng);
     }
-    (radiance, vertices)
+    vertices
 }
