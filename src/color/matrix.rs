@@ -70,6 +70,17 @@ mod tests {
     }
 
     #[test]
+    fn determinants_and_products() {
+        // Each term of the cofactor expansion matters: every entry differs.
+        let m = [[2.0, -3.0, 1.0], [2.0, 0.0, -1.0], [1.0, 4.0, 5.0]];
+        assert_eq!(determinant(&m), 49.0);
+        assert_eq!(determinant(&[[2.0, 0.0, 0.0], [0.0, 3.0, 0.0], [0.0, 0.0, 4.0]]), 24.0);
+        let n = [[1.0, 2.0, 0.0], [0.0, 1.0, 3.0], [4.0, 0.0, 1.0]];
+        assert_eq!(product(&m, &n), [[6.0, 1.0, -8.0], [-2.0, 4.0, -1.0], [21.0, 6.0, 17.0]]);
+        assert_eq!(determinant(&product(&m, &n)), determinant(&m) * determinant(&n));
+    }
+
+    #[test]
     fn singular_inverse_is_zero() {
         let singular = [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 0.0, 1.0]];
         assert_eq!(inverse(&singular), [[0.0; 3]; 3]);

@@ -50,7 +50,7 @@ fn a_splat_adds_each_wavelength_over_its_pdf_to_its_bucket() {
     assert_eq!(image.wavelengths(), [405.0, 455.0, 505.0, 555.0, 605.0, 655.0, 705.0]);
     let e = film.splat((3, 0), &h, v).unwrap_err().to_string();
     assert!(e.contains("(3, 0)") && e.contains("3 × 2"), "{e}");
-    assert_eq!((film.size(), film.buckets()), ((3, 2), b));
+    assert_eq!((film.size(), film.buckets(), image.size()), ((3, 2), b, (3, 2)));
 }
 
 #[test]
@@ -146,6 +146,12 @@ fn develop_checks_kind_and_light_and_scales_by_exposure_and_balance() {
     let y = |a: f64, b: f64| StandardObserver::Cie1931.integrals(range(a, b)).unwrap()[1];
     let truth = 0.5 * 2.0 * y(450.0, 550.0) + 0.25 * 2.0 * y(550.0, 650.0);
     assert!((plain.y - truth).abs() < 1e-3 * truth, "{} against {truth}", plain.y);
+    // By points: each channel's curve and light at its wavelength, times its cell's 100 nm.
+    let points =
+        Develop::new(sensor.clone()).light(&flat).quadrature(Quadrature::Point).xyz(&image).unwrap()[0];
+    let bar = |l: f64| StandardObserver::Cie1931.xyz_bar(l)[1];
+    let by_points = 0.5 * 2.0 * bar(500.0) * 100.0 + 0.25 * 2.0 * bar(600.0) * 100.0;
+    assert!((points.y - by_points).abs() < 1e-12 * by_points, "{} against {by_points}", points.y);
     let exposed =
         Develop::new(sensor.clone()).light(&flat).exposure(0.5, 400.0).unwrap().xyz(&image).unwrap()[0];
     assert!((exposed.y - 2.0 * plain.y).abs() < 1e-12 * plain.y);
@@ -167,8 +173,17 @@ fn develop_checks_kind_and_light_and_scales_by_exposure_and_balance() {
 #[test]
 fn spectral_images_check_their_shape() {
     let ok = SpectralImage::new((2, 1), Kind::Emissive, vec![400.0, 500.0, 700.0], vec![0.0; 6]).unwrap();
+    assert_eq!(
+        (ok.size(), ok.kind(), ok.wavelengths().len(), ok.values().len()),
+        ((2, 1), Kind::Emissive, 3, 6)
+    );
     assert_eq!(ok.cells(), [[350.0, 450.0], [450.0, 600.0], [600.0, 800.0]]);
     assert_eq!((ok.pixel(1, 0).map(<[f32]>::len), ok.pixel(2, 0), ok.pixel(0, 1)), (Some(3), None, None));
+    let square = SpectralImage::new((2, 2), Kind::Emissive, vec![500.0], vec![1.0, 2.0, 3.0, 4.0]).unwrap();
+    assert_eq!(
+        (square.pixel(2, 0), square.pixel(0, 2), square.pixel(0, 1)),
+        (None, None, Some(&[3.0f32][..]))
+    );
     let one = SpectralImage::new((1, 1), Kind::Reflective, vec![550.0], vec![1.0]).unwrap();
     assert_eq!(one.cells(), [[549.5, 550.5]]);
     for lambda in [vec![], vec![500.0, 500.0], vec![500.0, 400.0], vec![f64::NAN], vec![-1.0]] {
