@@ -79,8 +79,8 @@ fn cameras_fit_over_the_munsell_chips() {
 /// the scene's light against the tracer's XYZ of the same paths under it.
 /// Per sample, the relit value weighs the light's mean over the sample's
 /// 1 nm bucket where the tracer weighs the light at the sample: the same
-/// expectation, other noise (most under F11, whose lines rise by up to a
-/// third of their height per nanometre in its 5 nm table): the mean
+/// expectation, other noise (most under F11, whose lines rise by up to 18 %
+/// of their peak per nanometre in its 5 nm table): the mean
 /// per-pixel difference in Y is within 4 standard errors of zero (the
 /// largest per-pixel difference printed with `--nocapture`). Under a
 /// constant light, weighed at the buckets' wavelengths, they are the same

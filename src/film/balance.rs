@@ -20,9 +20,15 @@ use crate::spectrum::{Blackbody, Spectrum, StandardObserver, WavelengthRange};
 /// use speclab::spectrum::StandardObserver;
 /// use speclab::Xyz;
 /// let d65 = Xyz::new(0.95047, 1.0, 1.08883);
-/// let balance = WhiteBalance::daylight(3200.0, d65, Cat::Bradford, StandardObserver::Cie1931)?;
-/// let white = balance.apply(balance.from());
-/// assert!((white.x - d65.x).abs() < 1e-9 && (white.z - d65.z).abs() < 1e-9);
+/// for balance in [
+///     WhiteBalance::daylight(5000.0, d65, Cat::Bradford, StandardObserver::Cie1931)?,
+///     WhiteBalance::planckian(3200.0, d65, Cat::Cat16, StandardObserver::Cie1931)?,
+/// ] {
+///     let white = balance.apply(balance.from());
+///     assert!((white.x - d65.x).abs() < 1e-9 && (white.z - d65.z).abs() < 1e-9);
+/// }
+/// // CIE daylight is defined from 4000 K up.
+/// assert!(WhiteBalance::daylight(3200.0, d65, Cat::Bradford, StandardObserver::Cie1931).is_err());
 /// # Ok::<(), speclab::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
