@@ -55,6 +55,16 @@ fn f32_reads_back_bit_for_bit() {
 }
 
 #[test]
+fn files_on_disk_read_back() {
+    let path = std::env::temp_dir().join(format!("speclab-exr-{}.exr", std::process::id()));
+    let written = image(Kind::Reflective);
+    speclab_exr::write(&path, &written, &WriteOptions::default()).unwrap();
+    let read = speclab_exr::read(&path);
+    std::fs::remove_file(&path).unwrap();
+    assert_eq!(read.unwrap().image.values().len(), written.values().len());
+}
+
+#[test]
 fn f16_keeps_eleven_bits_in_its_normal_range() {
     let written = SpectralImage::new(
         (2, 2),
@@ -107,6 +117,8 @@ fn broken_files_say_what_is_wrong() {
         ("no_units.exr", ["emissiveUnits", "missing"]),
         ("disagree.exr", ["S1", "560"]),
         ("rgb_only.exr", ["no spectral channel", "B, G, R"]),
+        ("stokes_only.exr", ["S1 has 2", "S0 has 0"]),
+        ("duplicate.exr", ["S0.450nm", "S0.4,5e2nm"]),
     ] {
         let e = speclab_exr::read(data(name)).unwrap_err().to_string();
         assert!(says.iter().all(|s| e.contains(s)), "{name}: {e}");
@@ -157,7 +169,7 @@ fn damaged_files_never_panic() {
             }
         }
     }
-    assert!(replayed >= 9, "{replayed}");
+    assert!(replayed >= 11, "{replayed}");
     let whole = std::fs::read(data("pbrt_emissive.exr")).unwrap();
     for end in (0..whole.len()).step_by(7) {
         fuzz_body::spectral_exr(&whole[..end]);

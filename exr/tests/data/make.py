@@ -40,3 +40,5 @@ write("no_version.exr", ["S0.450nm", "S0.550nm"], {"emissiveUnits": "W.m^-2.sr^-
 write("no_units.exr", ["S0.450nm", "S0.550nm"], {"spectralLayoutVersion": "1.0"})
 write("disagree.exr", ["S0.450nm", "S0.550nm", "S1.450nm", "S1.560nm"], dict(EMISSIVE, polarisationHandedness="right"))
 write("rgb_only.exr", ["R", "G", "B"], {})
+write("stokes_only.exr", ["S1.450nm", "S1.550nm"], dict(EMISSIVE, polarisationHandedness="right"))
+write("duplicate.exr", ["S0.450nm", "S0.4,5e2nm", "S0.550nm"], EMISSIVE)
