@@ -106,6 +106,7 @@ fn reflective_units_and_polarised_files() {
 
     let file = speclab_exr::read(data("polarised.exr")).unwrap();
     assert_eq!(file.image.wavelengths(), [450.0, 550.0, 650.0]);
+    assert_eq!(speclab_exr::read(data("polarised_left.exr")).unwrap().image, file.image);
     assert_eq!(file.image.pixel(2, 1).unwrap(), [6.0, 6.125, 6.25], "S0 alone");
 }
 
@@ -119,6 +120,7 @@ fn broken_files_say_what_is_wrong() {
         ("rgb_only.exr", ["no spectral channel", "B, G, R"]),
         ("stokes_only.exr", ["S1 has 2", "S0 has 0"]),
         ("duplicate.exr", ["S0.450nm", "S0.4,5e2nm"]),
+        ("bad_handedness.exr", ["polarisationHandedness", "left or right, found \"up\""]),
     ] {
         let e = speclab_exr::read(data(name)).unwrap_err().to_string();
         assert!(says.iter().all(|s| e.contains(s)), "{name}: {e}");
@@ -169,7 +171,7 @@ fn damaged_files_never_panic() {
             }
         }
     }
-    assert!(replayed >= 11, "{replayed}");
+    assert!(replayed >= 13, "{replayed}");
     let whole = std::fs::read(data("pbrt_emissive.exr")).unwrap();
     for end in (0..whole.len()).step_by(7) {
         fuzz_body::spectral_exr(&whole[..end]);

@@ -42,3 +42,5 @@ write("disagree.exr", ["S0.450nm", "S0.550nm", "S1.450nm", "S1.560nm"], dict(EMI
 write("rgb_only.exr", ["R", "G", "B"], {})
 write("stokes_only.exr", ["S1.450nm", "S1.550nm"], dict(EMISSIVE, polarisationHandedness="right"))
 write("duplicate.exr", ["S0.450nm", "S0.4,5e2nm", "S0.550nm"], EMISSIVE)
+write("polarised_left.exr", stokes, dict(EMISSIVE, polarisationHandedness="left"))
+write("bad_handedness.exr", stokes, dict(EMISSIVE, polarisationHandedness="up"))
