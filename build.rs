@@ -77,12 +77,17 @@ fn sensors() -> Result<String, String> {
         code += &table.source(&rust);
         all.push(format!("({name:?}, {rust}_FIRST, {rust}_STEP, &{rust})"));
     }
+    let names: Vec<String> =
+        all.iter().map(|entry| entry[1..].split(',').next().unwrap_or("").to_string()).collect();
     let _ = writeln!(
         code,
         "/// Every camera: `(name, first nm, step nm, [r, g, b] rows)`.\n\
-         pub static ALL: [(&str, f64, f64, &[[f64; 3]]); {}] = [{}];",
-        all.len(),
-        all.join(", ")
+         pub static ALL: [(&str, f64, f64, &[[f64; 3]]); {n}] = [{}];\n\
+         /// Every camera's name, in the order of [`ALL`].\n\
+         pub static NAMES: [&str; {n}] = [{}];",
+        all.join(", "),
+        names.join(", "),
+        n = all.len(),
     );
     Ok(code + "}\n")
 }

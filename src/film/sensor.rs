@@ -38,8 +38,8 @@ impl Sensor {
     /// The cameras of [`data::sensors`](crate::spectrum::data::sensors), by
     /// pbrt-v4's names (`canon_eos_100d`, …, `sony_ilce_9`).
     #[must_use]
-    pub fn camera_names() -> Vec<&'static str> {
-        sensors::ALL.iter().map(|&(name, ..)| name).collect()
+    pub fn camera_names() -> &'static [&'static str] {
+        &sensors::NAMES
     }
 
     /// A camera by name: its curves as pbrt-v4 reads them (piecewise
@@ -47,7 +47,11 @@ impl Sensor {
     /// [`Error::UnknownName`] for a name not in [`Sensor::camera_names`].
     pub fn camera(name: &str) -> Result<Sensor, Error> {
         let Some(&(name, first, step, rows)) = sensors::ALL.iter().find(|(n, ..)| *n == name) else {
-            return Err(Error::UnknownName { what: "a camera", expected: &CAMERAS, found: name.into() });
+            return Err(Error::UnknownName {
+                what: "a camera",
+                expected: &sensors::NAMES,
+                found: name.into(),
+            });
         };
         let at = |lambda: f64| {
             let x = (lambda - first) / step;
@@ -211,18 +215,6 @@ impl Sensor {
         Ok(SensorFit { matrix, rms, max, count: pairs.len() })
     }
 }
-
-/// The name of every camera (for errors).
-static CAMERAS: [&str; 17] = {
-    let mut names = [""; 17];
-    let mut i = 0;
-    while i < 17 {
-        names[i] = sensors::ALL[i].0;
-        i += 1;
-    }
-    names
-};
-const _: () = assert!(sensors::ALL.len() == 17);
 
 /// `M` minimising `Σ‖M·c − x‖²` over `(c, x)` pairs: `(Σ x cᵀ)(Σ c cᵀ)⁻¹`;
 /// `None` if `Σ c cᵀ` is singular.
