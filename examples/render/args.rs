@@ -31,7 +31,9 @@ usage: render [--width W] [--height H] [--spp N] [--light NAME | --light-file PA
                      (BinnedPdf, default 256); --exact-pdf samples the density itself
   --spectra S        hero over exact tabulated spectra (default), dense 1 nm tables, or rgb: every
                      surface an RGB colour in --space looked up in its table at each hit
-                     (a textured scene; the lights dense)
+                     (a textured scene, as pbrt-v4 reads image textures; the lights dense), or
+                     rgb-converted: the same colours converted once, when the scene is built
+                     (as Mitsuba 3 loads bitmap textures)
   --space NAME       rgb's space: sRGB (default), Display P3, Rec.2020, ACES2065-1, ACEScg
   --precision P      the per-sample values' precision, f64 (default) or f32
   --exact            also integrate each path exactly over wavelength and compare pixel by pixel
@@ -118,10 +120,17 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
             Long("strata") => o.sampling.strata = parser.value()?.parse()?,
             Long("spectra") => {
                 let v = parser.value()?.string()?;
-                let kinds = [("exact", (false, false)), ("dense", (true, false)), ("rgb", (true, true))];
-                let (dense, rgb) = choice(&v, &kinds, "exact, dense or rgb spectra")?;
+                let kinds = [
+                    ("exact", (false, false, false)),
+                    ("dense", (true, false, false)),
+                    ("rgb", (true, true, false)),
+                    ("rgb-converted", (true, true, true)),
+                ];
+                let (dense, rgb, converted) =
+                    choice(&v, &kinds, "exact, dense, rgb or rgb-converted spectra")?;
                 o.dense = dense;
                 o.rgb_space = rgb.then_some(o.rgb_space.unwrap_or("sRGB"));
+                o.rgb_converted = converted;
             }
             Long("space") => {
                 let v = parser.value()?.string()?;

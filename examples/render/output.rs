@@ -39,6 +39,9 @@ pub fn report(a: &Args, setup: &Setup, timed: &Timed) {
             },
             o.sampling.strata,
             match (o.dense, o.rgb_space) {
+                (_, Some(space)) if o.rgb_converted => {
+                    format!("dense lights, RGB surfaces in {space} converted once,")
+                }
                 (_, Some(space)) => format!("dense lights, RGB surfaces in {space} looked up at each hit,"),
                 (true, None) => "dense".to_string(),
                 (false, None) => "exact".to_string(),

@@ -43,22 +43,9 @@ pub(crate) const fn nodes(n: usize) -> [f32; MAX_NODES] {
     out
 }
 
-/// The interval of `z` in (0, 1], `k` in `0..n − 1` with
-/// `nodes[k] ≤ z < nodes[k + 1]` (the last interval closed), from a first
-/// guess `k` at most one off.
-#[inline(always)]
-const fn settle(z: f32, guess: usize, nodes: &[f32; MAX_NODES], n: usize) -> usize {
-    let mut k = if guess > n - 2 { n - 2 } else { guess };
-    if k > 0 && z < nodes[k] {
-        k -= 1;
-    } else if k < n - 2 && z >= nodes[k + 1] {
-        k += 1;
-    }
-    k
-}
-
-/// [`settle`]'s interval found by walking the nodes: what the guesses are
-/// made of (and tested against).
+/// The interval `k` of `z` in (0, 1], `nodes[k] ≤ z < nodes[k + 1]` (the
+/// last interval closed), found by walking the nodes: what the guesses
+/// are made of (and [`Grid::interval`] is tested against).
 pub(crate) const fn interval_walked(z: f32, nodes: &[f32; MAX_NODES], n: usize) -> usize {
     let mut k = 0;
     while k < n - 2 && z >= nodes[k + 1] {
@@ -106,103 +93,136 @@ pub(crate) const fn guesses(nodes: &[f32; MAX_NODES], n: usize) -> [u8; KEYS] {
     out
 }
 
-/// [`settle`]'s interval of `z` in (0, 1] by the table of guesses: the
-/// distance to the nearer end, `z` or `1 − z` (exact), looked up, mirrored
-/// above ½ (the nodes are symmetric), and put right by one comparison on
-/// each side. No search, no square root: the same at compile time and at
-/// run time.
-#[inline(always)]
-pub(crate) const fn interval(z: f32, nodes: &[f32; MAX_NODES], guesses: &[u8; KEYS], n: usize) -> usize {
-    let upper = z > 0.5;
-    let d = if upper { 1.0 - z } else { z };
-    let low = guesses[key(d)] as usize;
-    let guess = if upper { n - 2 - if low > n - 2 { n - 2 } else { low } } else { low };
-    settle(z, guess, nodes, n)
+/// A table's grid, computed once per table: the nodes of the largest
+/// component, the reciprocals of their intervals' widths, and the guesses
+/// of an interval.
+#[derive(Clone)]
+pub(crate) struct Grid {
+    /// Nodes per axis, 2 to [`MAX_NODES`].
+    pub(crate) n: usize,
+    /// `n − 1`, the last node's index.
+    last: f32,
+    /// The largest component's nodes (the first `n`).
+    nodes: [f32; MAX_NODES],
+    /// `1/(nodes[k + 1] − nodes[k])`, the first `n − 1`.
+    inverse_widths: [f32; MAX_NODES],
+    /// The guesses of an interval ([`Grid::interval`]).
+    guesses: [u8; KEYS],
 }
 
-/// The case (which component is largest: 0, 1, 2, the first of equals
-/// after red, as pbrt-v4 chooses) and that component.
-#[inline]
-pub(crate) const fn case_of(rgb: [f32; 3]) -> (usize, f32) {
-    let case = if rgb[0] > rgb[1] {
-        if rgb[0] > rgb[2] { 0 } else { 2 }
-    } else if rgb[1] > rgb[2] {
-        1
-    } else {
-        2
-    };
-    (case, rgb[case])
+/// Where a colour falls in a table: its first corner's triple and the
+/// fractions `[dx, dy, dz]` along the three axes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Place {
+    at: usize,
+    d: [f32; 3],
 }
 
-/// Where `rgb` (in [0, 1]³, not a grey: `z > 0`) falls in a table with
-/// these `nodes`, `n` per axis, given the case and the interval `k`: its
-/// first corner's triple, and the fractions `[dx, dy, dz]` along the
-/// three axes.
-#[inline(always)]
-const fn corner(
-    nodes: &[f32; MAX_NODES],
-    n: usize,
-    rgb: [f32; 3],
-    case: usize,
-    k: usize,
-) -> (usize, [f32; 3]) {
-    let (z, last) = (rgb[case], (n - 1) as f32);
-    // Each ratio first (at most 1): `last / z` overflows for z below 1e-37.
-    let (x, y) = (rgb[(case + 1) % 3] / z * last, rgb[(case + 2) % 3] / z * last);
-    let (xi, yi) = (index(x, n), index(y, n));
-    let (z0, z1) = (nodes[k], nodes[k + 1]);
-    (((case * n + k) * n + yi) * n + xi, [x - xi as f32, y - yi as f32, (z - z0) / (z1 - z0)])
-}
+impl Grid {
+    /// The grid of a table of `n` nodes per axis, 2 to [`MAX_NODES`] (a
+    /// checked table's).
+    pub(crate) const fn new(n: usize) -> Grid {
+        let nodes = nodes(n);
+        let mut inverse_widths = [0.0; MAX_NODES];
+        let mut k = 0;
+        while k + 1 < n {
+            inverse_widths[k] = 1.0 / (nodes[k + 1] - nodes[k]);
+            k += 1;
+        }
+        Grid { n, last: (n - 1) as f32, nodes, inverse_widths, guesses: guesses(&nodes, n) }
+    }
 
-/// The coefficients of `rgb` in the table `bytes` (as [`corner`]).
-#[inline(always)]
-pub(crate) const fn interpolate(
-    bytes: &[u8],
-    nodes: &[f32; MAX_NODES],
-    n: usize,
-    rgb: [f32; 3],
-    case: usize,
-    k: usize,
-) -> [f32; 3] {
-    let (at, [dx, dy, dz]) = corner(nodes, n, rgb, case, k);
-    let low = plane(bytes, n, at, dx, dy);
-    let high = plane(bytes, n, at + n * n, dx, dy);
-    lerp(low, high, dz)
-}
+    /// The interval of `z` in (0, 1] ([`interval_walked`]'s) from the
+    /// table of guesses: the distance to the nearer end, `z` or `1 − z`
+    /// (exact), looked up, mirrored above ½ (the nodes are symmetric), and
+    /// put right by one comparison on each side. No search, no branch, no
+    /// square root: the same at compile time and at run time.
+    #[inline(always)]
+    pub(crate) const fn interval(&self, z: f32) -> usize {
+        let last = self.n - 2;
+        let upper = z > 0.5;
+        // A guess is an interval, at most `last`.
+        let low = self.guesses[key(if upper { 1.0 - z } else { z })] as usize;
+        let guess = if upper { last - low } else { low };
+        let up = (z >= self.nodes[guess + 1]) as usize;
+        let k = (guess + up).saturating_sub((z < self.nodes[guess]) as usize);
+        if k > last { last } else { k }
+    }
 
-/// [`interpolate`] at run time: the same operations in the same order on
-/// four lanes at once (each corner's triple and the next table entry's
-/// first coefficient, which is dropped), so the same bits, and faster.
-#[inline(always)]
-pub(crate) fn interpolate_lanes(
-    bytes: &[u8],
-    nodes: &[f32; MAX_NODES],
-    n: usize,
-    rgb: [f32; 3],
-    case: usize,
-    k: usize,
-) -> [f32; 3] {
-    let (first, [dx, dy, dz]) = corner(nodes, n, rgb, case, k);
-    let [dx, dy, dz] = [dx, dy, dz].map(f32x4::splat);
-    let (at, row, slice) = (HEADER_LEN + 12 * first, 12 * n, 12 * n * n);
-    let load = |at: usize| {
-        let b = bytes.get(at..).and_then(<[u8]>::first_chunk::<16>).copied().unwrap_or([0; 16]);
-        f32x4::from(std::array::from_fn::<f32, 4, _>(|i| {
-            f32::from_le_bytes([b[4 * i], b[4 * i + 1], b[4 * i + 2], b[4 * i + 3]])
-        }))
-    };
-    let lerp = |a: f32x4, b: f32x4, t: f32x4| a + t * (b - a);
-    let plane = |at: usize| {
-        lerp(lerp(load(at), load(at + 12), dx), lerp(load(at + row), load(at + row + 12), dx), dy)
-    };
-    let c = lerp(plane(at), plane(at + slice), dz).to_array();
-    [c[0], c[1], c[2]]
-}
+    /// Where `rgb` (in [0, 1]³) falls: the case (which component is
+    /// largest, the first of equals after red, as pbrt-v4 chooses), the
+    /// largest component `z`'s interval, the other two as fractions of
+    /// `z`. `None` for a colour whose largest component is below `f32`'s
+    /// smallest normal number (black: `1/z` would overflow).
+    #[inline(always)]
+    pub(crate) const fn locate(&self, [r, g, b]: [f32; 3]) -> Option<Place> {
+        let case = if r > g {
+            if r > b { 0 } else { 2 }
+        } else if g > b {
+            1
+        } else {
+            2
+        };
+        let (z, x, y) = if case == 0 {
+            (r, g, b)
+        } else if case == 1 {
+            (g, b, r)
+        } else {
+            (b, r, g)
+        };
+        if z < f32::MIN_POSITIVE {
+            return None;
+        }
+        let k = self.interval(z);
+        let scale = 1.0 / z;
+        let (x, y) = (x * scale * self.last, y * scale * self.last);
+        let (xi, yi) = (self.index(x), self.index(y));
+        let dz = (z - self.nodes[k]) * self.inverse_widths[k];
+        let n = self.n;
+        let at = case * n * n * n + k * n * n + yi as usize * n + xi as usize;
+        Some(Place { at, d: [x - xi as f32, y - yi as f32, dz] })
+    }
 
-/// `floor(v)`, at most `n − 2`.
-const fn index(v: f32, n: usize) -> usize {
-    let i = v as usize;
-    if i > n - 2 { n - 2 } else { i }
+    /// `floor(v)` of `v ≥ 0`, at most `n − 2`.
+    #[inline(always)]
+    const fn index(&self, v: f32) -> u32 {
+        let (i, top) = (v as u32, self.n as u32 - 2);
+        if i > top { top } else { i }
+    }
+
+    /// The coefficients at `place` in the table `bytes`: eight triples
+    /// interpolated trilinearly, linearly in `z` between its nodes.
+    #[inline(always)]
+    pub(crate) const fn interpolate(&self, bytes: &[u8], place: Place) -> [f32; 3] {
+        let (n, Place { at, d: [dx, dy, dz] }) = (self.n, place);
+        let low = plane(bytes, n, at, dx, dy);
+        let high = plane(bytes, n, at + n * n, dx, dy);
+        lerp(low, high, dz)
+    }
+
+    /// [`Grid::interpolate`] at run time: the same operations in the same
+    /// order on four lanes at once (each corner's triple and the next
+    /// table entry's first coefficient, which is dropped), so the same
+    /// bits, and faster: one bounds check per two corners.
+    #[inline(always)]
+    pub(crate) fn interpolate_lanes(&self, bytes: &[u8], place: Place) -> [f32; 3] {
+        let (n, Place { at, d }) = (self.n, place);
+        let [dx, dy, dz] = d.map(f32x4::splat);
+        let (at, row, slice) = (HEADER_LEN + 12 * at, 12 * n, 12 * n * n);
+        let lane = |b: &[u8; 28], i: usize| f32::from_le_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+        let pair = |at: usize| {
+            let b = bytes.get(at..).and_then(<[u8]>::first_chunk::<28>).copied().unwrap_or([0; 28]);
+            let first = f32x4::from([lane(&b, 0), lane(&b, 4), lane(&b, 8), lane(&b, 12)]);
+            (first, f32x4::from([lane(&b, 12), lane(&b, 16), lane(&b, 20), lane(&b, 24)]))
+        };
+        let lerp = |a: f32x4, b: f32x4, t: f32x4| a + t * (b - a);
+        let plane = |at: usize| {
+            let ((a, b), (c, d)) = (pair(at), pair(at + row));
+            lerp(lerp(a, b, dx), lerp(c, d, dx), dy)
+        };
+        let c = lerp(plane(at), plane(at + slice), dz).to_array();
+        [c[0], c[1], c[2]]
+    }
 }
 
 /// One plane of four triples from `at` (x, x + 1, and the row above),
@@ -251,10 +271,9 @@ mod tests {
                 let z = node(k, n);
                 zs.extend([z, f32::from_bits(z.to_bits() - 1), f32::from_bits(z.to_bits() + 1).min(1.0)]);
             }
-            let all = nodes(n);
-            let table = guesses(&all, n);
+            let (all, grid) = (nodes(n), Grid::new(n));
             for z in zs {
-                let k = interval(z, &all, &table, n);
+                let k = grid.interval(z);
                 assert_eq!(k, interval_walked(z, &all, n), "z = {z:e}, n = {n}");
                 assert!(node(k, n) <= z && (z < node(k + 1, n) || k == n - 2), "z = {z:e}: {k}");
             }

@@ -62,12 +62,8 @@ pub const RESOLUTION: usize = 64;
 #[derive(Clone)]
 pub struct RgbTable {
     bytes: Bytes,
-    /// Nodes per axis.
-    n: usize,
-    /// The largest component's nodes (the first `n`).
-    nodes: [f32; lookup::MAX_NODES],
-    /// The guesses of a node's interval ([`lookup::interval`]).
-    guesses: [u8; lookup::KEYS],
+    /// Nodes per axis, the nodes, and how a colour finds its place.
+    grid: lookup::Grid,
 }
 
 /// Where the bytes live: the program's static data, or shared on the heap.
@@ -107,11 +103,9 @@ impl RgbTable {
         RgbTable::with_bytes(Bytes::Static(bytes), n)
     }
 
-    /// The table of checked `bytes` of `n` nodes per axis, with its nodes
-    /// and guesses.
+    /// The table of checked `bytes` of `n` nodes per axis, with its grid.
     const fn with_bytes(bytes: Bytes, n: usize) -> RgbTable {
-        let nodes = lookup::nodes(n);
-        RgbTable { bytes, n, nodes, guesses: lookup::guesses(&nodes, n) }
+        RgbTable { bytes, grid: lookup::Grid::new(n) }
     }
 
     /// A table fitted by `fit` for the space named `name`, `n` nodes per
@@ -162,15 +156,18 @@ impl RgbTable {
     /// Nodes per axis.
     #[must_use]
     pub const fn resolution(&self) -> usize {
-        self.n
+        self.grid.n
     }
 
     /// What the file says of itself: the space's name and the XYZ → RGB
     /// matrix the table was fitted for.
     #[must_use]
     pub fn header(&self) -> rgb_file::Header {
-        let unreadable =
-            || rgb_file::Header { resolution: self.n as u32, matrix: [[0.0; 3]; 3], name: String::new() };
+        let unreadable = || rgb_file::Header {
+            resolution: self.grid.n as u32,
+            matrix: [[0.0; 3]; 3],
+            name: String::new(),
+        };
         rgb_file::read_header(self.as_bytes()).unwrap_or_else(unreadable)
     }
 
@@ -196,13 +193,13 @@ impl RgbTable {
             }
             i += 1;
         }
-        let poly = match lookup::case_of(rgb) {
-            (_, z) if rgb[0] == rgb[1] && rgb[1] == rgb[2] => constant(z as f64),
-            (case, z) => {
-                let k = lookup::interval(z, &self.nodes, &self.guesses, self.n);
-                let c = lookup::interpolate(bytes, &self.nodes, self.n, rgb, case, k);
-                SigmoidPolynomial::new([c[0] as f64, c[1] as f64, c[2] as f64])
-            }
+        let poly = if rgb[0] == rgb[1] && rgb[1] == rgb[2] {
+            constant(rgb[0] as f64)
+        } else if let Some(place) = self.grid.locate(rgb) {
+            let c = self.grid.interpolate(bytes, place);
+            SigmoidPolynomial::new([c[0] as f64, c[1] as f64, c[2] as f64])
+        } else {
+            SigmoidPolynomial::BLACK
         };
         Some(RgbAlbedo::from_polynomial(poly))
     }
@@ -229,15 +226,9 @@ impl RgbTable {
         if rgb[0] == rgb[1] && rgb[1] == rgb[2] {
             return constant(rgb[0]);
         }
-        let rgb = rgb.map(|v| v as f32);
-        let (case, z) = lookup::case_of(rgb);
-        if z == 0.0 {
-            // Components so small that they are 0 in f32.
-            return SigmoidPolynomial::BLACK;
-        }
-        let k = lookup::interval(z, &self.nodes, &self.guesses, self.n);
-        let c = lookup::interpolate_lanes(self.as_bytes(), &self.nodes, self.n, rgb, case, k);
-        SigmoidPolynomial::new(c.map(f64::from))
+        // Components below f32's smallest normal number are black.
+        let Some(place) = self.grid.locate(rgb.map(|v| v as f32)) else { return SigmoidPolynomial::BLACK };
+        SigmoidPolynomial::new(self.grid.interpolate_lanes(self.as_bytes(), place).map(f64::from))
     }
 }
 
@@ -254,7 +245,7 @@ impl fmt::Debug for RgbTable {
             Bytes::Shared(_) => "shared",
         };
         f.debug_struct("RgbTable")
-            .field("resolution", &self.n)
+            .field("resolution", &self.grid.n)
             .field("bytes", &self.as_bytes().len())
             .field("kind", &kind)
             .finish()

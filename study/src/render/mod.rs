@@ -92,6 +92,10 @@ pub struct Options {
     /// colour in this built-in space (by name), looked up in the space's
     /// table at each hit, as a renderer's textures are.
     pub rgb_space: Option<&'static str>,
+    /// With `rgb_space`: each surface's colour converted to its albedo
+    /// once, when the scene is built (Mitsuba 3's `bitmap` textures),
+    /// instead of at each hit (pbrt-v4's image textures).
+    pub rgb_converted: bool,
     /// Per-sample values in `f32` instead of `f64`.
     pub single: bool,
     /// Bins of the histogram pdf, or `None` for the exact density.
@@ -113,6 +117,7 @@ impl Default for Options {
             sampling: Sampling { strata: Strata::Jittered, ..Sampling::DEFAULT },
             dense: false,
             rgb_space: None,
+            rgb_converted: false,
             single: false,
             bins: Some(256),
             threads: 2,

@@ -78,7 +78,7 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
                     }
                 })?;
                 let l: Vec<DenseSpectrum> = lights.iter().map(DenseSpectrum::new).collect();
-                let s = textured::<DenseSpectrum>(setup, space);
+                let s = textured::<DenseSpectrum>(setup, space, o.rgb_converted);
                 return Ok(if o.single {
                     with.go(&Hero::new(l, s, DenseObserver::new(), pdf).precision::<f32>())
                 } else {
@@ -110,14 +110,16 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
 /// The built-in spaces' names, for `Options::rgb_space`.
 pub const SPACES: [&str; 5] = ["sRGB", "Display P3", "Rec.2020", "ACES2065-1", "ACEScg"];
 
-/// The scene's surfaces as RGB colours in `space`, each looked up at every
-/// hit: a patch's colour under the space's illuminant, a texel's sRGB
-/// colour taken into the space, each clamped to [0, 1].
-pub fn textured<S>(setup: &Setup, space: &'static RgbSpace) -> Vec<Albedo<S>> {
+/// The scene's surfaces as RGB colours in `space`: a patch's colour under
+/// the space's illuminant, a texel's sRGB colour taken into the space,
+/// each clamped to [0, 1]; each looked up at every hit, or, if
+/// `converted`, once here.
+pub fn textured<S>(setup: &Setup, space: &'static RgbSpace, converted: bool) -> Vec<Albedo<S>> {
     let clamp = |c: LinearRgb| c.map(|v| v.clamp(0.0, 1.0));
     let patches = setup.patches.iter().map(|p| clamp(space.rgb_of(p)));
     let texels = setup.colours.iter().map(|&c| clamp(space.rgb(RgbSpace::srgb().xyz(c))));
-    patches.chain(texels).map(|rgb| Albedo::Lookup(rgb, space)).collect()
+    let albedo = |rgb| if converted { Albedo::converted(rgb, space) } else { Albedo::Lookup(rgb, space) };
+    patches.chain(texels).map(albedo).collect()
 }
 
 /// Hero over these lights and patches (the texels after them), in `T`.

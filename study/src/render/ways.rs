@@ -33,6 +33,12 @@ impl<S> Albedo<S> {
     fn looked_up(rgb: LinearRgb, space: &RgbSpace) -> RgbAlbedo {
         space.albedo(rgb).unwrap_or(RgbAlbedo::from_polynomial(speclab::spectrum::SigmoidPolynomial::BLACK))
     }
+
+    /// The colour `rgb` in `space` converted once: the [`Albedo::Texel`]
+    /// of what a [`Albedo::Lookup`] of it looks up at each hit.
+    pub fn converted(rgb: LinearRgb, space: &RgbSpace) -> Self {
+        Albedo::Texel(Self::looked_up(rgb, space))
+    }
 }
 
 impl<S: Spectrum> Spectrum for Albedo<S> {

@@ -136,3 +136,27 @@ fn the_fitted_tables_carry_each_published_rule_worst() {
     assert_eq!(rows[63].published[1], None);
     assert!(rows[63].published[0].is_some());
 }
+
+/// The textured scene renders the same image, bit for bit, whether its
+/// colours are looked up at each hit or converted once (the same albedos,
+/// read at different times), and neither is the dense scene's.
+#[test]
+fn converted_texels_render_what_lookups_render() {
+    use speclab_study::render::{Options, Setup, run};
+    let setup = Setup::new(&[Named::from(Light::F11)]).expect("a scene");
+    let o = Options {
+        width: 8,
+        height: 8,
+        spp: 2,
+        dense: true,
+        single: true,
+        threads: 1,
+        rgb_space: Some("ACEScg"),
+        ..Options::default()
+    };
+    let (looked_up, _) = run::against_exact(&o, &setup).expect("a render");
+    let (converted, _) = run::against_exact(&Options { rgb_converted: true, ..o }, &setup).expect("a render");
+    assert_eq!(looked_up.xyz, converted.xyz);
+    let (dense, _) = run::against_exact(&Options { rgb_space: None, ..o }, &setup).expect("a render");
+    assert_ne!(dense.xyz, looked_up.xyz);
+}

@@ -154,6 +154,26 @@ pub fn speclab_texel_hero(
     sum / n as f64
 }
 
+/// [`speclab_texel_hero`] with the texture's colours converted once, when
+/// it was loaded (an `RgbAlbedo` per texel, as Mitsuba 3's `bitmap`
+/// texture stores coefficients): at each hit, the texel's albedo is read,
+/// then sampled.
+#[inline(never)]
+pub fn speclab_converted_texel_hero(
+    light: &DenseSpectrum,
+    texels: &[RgbAlbedo],
+    n: usize,
+    rng: &mut XorShift32,
+) -> Xyz {
+    let mut sum = Xyz::ZERO;
+    for i in 0..n {
+        let u = f64::from(rng.next()) * (1.0 / 4_294_967_296.0);
+        let h = HeroSample::<4, f32>::new(u as f32);
+        sum += h.to_xyz(light.sample(&h) * texels[i % texels.len()].sample(&h));
+    }
+    sum / n as f64
+}
+
 /// pbrt-v4's `DenselySampledSpectrum` lookup: the entry at the rounded
 /// wavelength, 0 outside the table.
 #[inline(always)]
