@@ -280,6 +280,24 @@ mod tests {
         }
     }
 
+    /// The case of a colour with equal components is pbrt-v4's (the first
+    /// of equals after red: green for red = green, blue for blue equal to
+    /// the largest), read back from the place's offset; a largest
+    /// component at `f32`'s smallest normal number has a place, below it
+    /// none (black).
+    #[test]
+    fn ties_take_pbrt_v4s_case_and_the_smallest_normal_has_a_place() {
+        let grid = Grid::new(64);
+        let case = |rgb: [f32; 3]| grid.locate(rgb).map(|p| p.at / (64 * 64 * 64));
+        assert_eq!(case([0.5, 0.5, 0.2]), Some(1));
+        assert_eq!(case([0.6, 0.5, 0.6]), Some(2));
+        assert_eq!(case([0.2, 0.7, 0.7]), Some(2));
+        assert_eq!(case([0.7, 0.2, 0.3]), Some(0));
+        let tiny = f32::MIN_POSITIVE;
+        assert_eq!(case([tiny, 0.0, 0.0]), Some(0));
+        assert_eq!(case([f32::from_bits(tiny.to_bits() - 1), 0.0, 0.0]), None);
+    }
+
     /// The nodes of pbrt-v4's placement, rising from 0 to 1, symmetric.
     #[test]
     fn nodes_rise_from_zero_to_one_symmetrically() {
