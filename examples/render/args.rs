@@ -126,8 +126,7 @@ pub fn parse() -> Result<Args, Box<dyn std::error::Error>> {
                     ("rgb", (true, true, false)),
                     ("rgb-converted", (true, true, true)),
                 ];
-                let (dense, rgb, converted) =
-                    choice(&v, &kinds, "exact, dense, rgb or rgb-converted spectra")?;
+                let (dense, rgb, converted) = choice(&v, &kinds, "a kind of spectra")?;
                 o.dense = dense;
                 o.rgb_space = rgb.then_some(o.rgb_space.unwrap_or("sRGB"));
                 o.rgb_converted = converted;
