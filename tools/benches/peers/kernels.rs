@@ -144,14 +144,7 @@ pub fn speclab_texel_hero(
     n: usize,
     rng: &mut XorShift32,
 ) -> Xyz {
-    let mut sum = Xyz::ZERO;
-    for i in 0..n {
-        let u = f64::from(rng.next()) * (1.0 / 4_294_967_296.0);
-        let h = HeroSample::<4, f32>::new(u as f32);
-        let albedo = space.albedo(texels[i % texels.len()]).expect("texels are albedos");
-        sum += h.to_xyz(light.sample(&h) * albedo.sample(&h));
-    }
-    sum / n as f64
+    texel_loop(light, n, rng, |i| space.albedo(texels[i % texels.len()]).expect("texels are albedos"))
 }
 
 /// [`speclab_texel_hero`] with the texture's colours converted once, when
@@ -165,11 +158,23 @@ pub fn speclab_converted_texel_hero(
     n: usize,
     rng: &mut XorShift32,
 ) -> Xyz {
+    texel_loop(light, n, rng, |i| texels[i % texels.len()])
+}
+
+/// The texel kernels' loop: `n` f32 hero samples of the light times the
+/// albedo of hit `i`.
+#[inline(always)]
+fn texel_loop(
+    light: &DenseSpectrum,
+    n: usize,
+    rng: &mut XorShift32,
+    albedo: impl Fn(usize) -> RgbAlbedo,
+) -> Xyz {
     let mut sum = Xyz::ZERO;
     for i in 0..n {
         let u = f64::from(rng.next()) * (1.0 / 4_294_967_296.0);
         let h = HeroSample::<4, f32>::new(u as f32);
-        sum += h.to_xyz(light.sample(&h) * texels[i % texels.len()].sample(&h));
+        sum += h.to_xyz(light.sample(&h) * albedo(i).sample(&h));
     }
     sum / n as f64
 }
