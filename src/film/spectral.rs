@@ -111,7 +111,7 @@ impl SpectralFilm {
     /// (`v / (K·pdf)`); a wavelength whose weight is zero (a terminated
     /// secondary, or one dropped) or that falls outside the range adds
     /// nothing. An [`Error::Pixel`] outside the film (nothing added).
-    #[inline]
+    #[inline(always)]
     pub fn splat<const K: usize, T: Float>(
         &mut self,
         (x, y): (usize, usize),
@@ -179,7 +179,7 @@ pub struct FilmRow<'a> {
 impl FilmRow<'_> {
     /// [`SpectralFilm::splat`] into pixel `x` of the row; an
     /// [`Error::Pixel`] past its end.
-    #[inline]
+    #[inline(always)]
     pub fn splat<const K: usize, T: Float>(
         &mut self,
         x: usize,

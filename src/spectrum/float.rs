@@ -251,11 +251,13 @@ impl sealed::Sealed for f32 {
             let l = f32x4::new([lambda[at], lambda[at + 1], lambda[at + 2], lambda[at + 3]]);
             let w = f32x4::new([wv[at][0], wv[at + 1][0], wv[at + 2][0], wv[at + 3][0]]);
             let v = f32x4::new([wv[at][1], wv[at + 1][1], wv[at + 2][1], wv[at + 3][1]]);
-            // max puts a NaN at 0; the clamp keeps the truncation in range.
+            // max puts a NaN at 0 and the clamp keeps the truncation in
+            // 0..=last (at most 4095, exact in f32), so no lane needs
+            // clamping again as an integer.
             let x = ((l - f32x4::splat(min)) * f32x4::splat(per)).fast_max(f32x4::ZERO).fast_min(top);
             let adds = l.cmp_ge(f32x4::splat(min)) & l.cmp_le(f32x4::splat(max)) & w.cmp_ne(f32x4::ZERO);
             let (i, value) = (x.fast_trunc_int().to_array(), adds.blend(w * v, f32x4::ZERO).to_array());
-            (0..4).for_each(|j| out[4 * c + j] = ((i[j] as usize).min(last), f64::from(value[j])));
+            (0..4).for_each(|j| out[4 * c + j] = (i[j] as usize, f64::from(value[j])));
         }
         for j in 4 * chunks..K {
             let (l, [w, v]) = (lambda[j], wv[j]);

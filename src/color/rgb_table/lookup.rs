@@ -298,6 +298,19 @@ mod tests {
         assert_eq!(case([f32::from_bits(tiny.to_bits() - 1), 0.0, 0.0]), None);
     }
 
+    /// A component equal to the largest is at the far end of the last
+    /// interval (pbrt-v4's `min(x, res − 2)`, then a fraction of 1), not
+    /// at the start of an interval past the table's edge.
+    #[test]
+    fn a_component_equal_to_the_largest_ends_the_last_interval() {
+        let grid = Grid::new(64);
+        let place = grid.locate([0.5, 0.5, 0.2]).expect("a place");
+        let (x, y) = (place.at % 64, place.at / 64 % 64);
+        assert_eq!((x, y), (25, 62), "green is largest: x is blue, y red");
+        assert_eq!(place.d[1], 1.0);
+        assert!((place.d[0] - 0.2).abs() < 1e-5, "{:?}", place.d);
+    }
+
     /// The nodes of pbrt-v4's placement, rising from 0 to 1, symmetric.
     #[test]
     fn nodes_rise_from_zero_to_one_symmetrically() {
