@@ -31,6 +31,7 @@
 //! ```
 
 pub mod adaptation;
+pub mod builtin;
 pub mod difference;
 pub mod lab;
 pub mod matrix;
@@ -44,6 +45,7 @@ pub(crate) mod triple;
 mod upsample;
 mod xyz;
 
+pub use builtin::BuiltIn;
 pub use matrix::Matrix;
 pub use rgb::LinearRgb;
 pub use rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded};

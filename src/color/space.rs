@@ -75,7 +75,7 @@ use std::sync::{Arc, OnceLock};
 
 use crate::color::matrix::{Matrix, inverse, mul};
 use crate::color::rgb::LinearRgb;
-use crate::color::rgb_table::{RESOLUTION, RgbTable};
+use crate::color::rgb_table::{BuiltInTable, RESOLUTION, RgbTable};
 use crate::color::xyz::Xyz;
 use crate::error::Error;
 use crate::spectrum::TabulatedSpectrum;
@@ -95,9 +95,11 @@ pub struct RgbSpace {
     to_rgb: Matrix,
     /// What the spectra of its colours are fitted with.
     pub(crate) fit: crate::color::upsample::Fit,
-    /// Its table of fitted colours: built in, or built on first use and
+    /// Its table of fitted colours, given or built on first use and
     /// shared by every clone.
     table: Arc<OnceLock<RgbTable>>,
+    /// A built-in space's table, until another is given.
+    pub(crate) built_in: Option<BuiltInTable>,
 }
 
 impl RgbSpace {
@@ -116,82 +118,7 @@ impl RgbSpace {
         let to_xyz = normalised_primary_matrix(primaries, white).ok_or(Error::Primaries)?;
         let to_rgb = inverse(&to_xyz);
         let fit = crate::color::upsample::Fit::new(illuminant, &to_rgb);
-        Ok(RgbSpace { name, primaries, white, to_xyz, to_rgb, fit, table: Arc::default() })
-    }
-
-    /// Linear sRGB: IEC 61966-2-1's primaries (those of ITU-R BT.709) and
-    /// D65 (0.3127, 0.3290), spectra under the CIE's D65.
-    #[must_use]
-    pub fn srgb() -> &'static RgbSpace {
-        static SPACE: OnceLock<RgbSpace> = OnceLock::new();
-        SPACE.get_or_init(|| {
-            standard("sRGB", [[0.64, 0.33], [0.30, 0.60], [0.15, 0.06]], D65, &lights::CIE_D65)
-                .with_built_in(RgbTable::SRGB.clone())
-        })
-    }
-
-    /// Display P3: the P3 primaries of SMPTE EG 432-1 with D65, as Apple's
-    /// displays use them; spectra under the CIE's D65.
-    #[must_use]
-    pub fn display_p3() -> &'static RgbSpace {
-        static SPACE: OnceLock<RgbSpace> = OnceLock::new();
-        let primaries = [[0.680, 0.320], [0.265, 0.690], [0.150, 0.060]];
-        SPACE.get_or_init(|| {
-            let space = standard("Display P3", primaries, D65, &lights::CIE_D65);
-            #[cfg(feature = "wide-gamut")]
-            let space = space.with_built_in(RgbTable::DISPLAY_P3.clone());
-            space
-        })
-    }
-
-    /// ITU-R BT.2020 (Rec. 2020): spectral primaries at 630, 532 and
-    /// 467 nm, D65; spectra under the CIE's D65.
-    #[must_use]
-    pub fn rec2020() -> &'static RgbSpace {
-        static SPACE: OnceLock<RgbSpace> = OnceLock::new();
-        let primaries = [[0.708, 0.292], [0.170, 0.797], [0.131, 0.046]];
-        SPACE.get_or_init(|| {
-            let space = standard("Rec.2020", primaries, D65, &lights::CIE_D65);
-            #[cfg(feature = "wide-gamut")]
-            let space = space.with_built_in(RgbTable::REC2020.clone());
-            space
-        })
-    }
-
-    /// ACES2065-1 (SMPTE ST 2065-1): the AP0 primaries, which enclose every
-    /// colour (two are not colours), and the ACES white (0.32168, 0.33767);
-    /// spectra under CIE daylight at 6000 K, whose chromaticity the ACES
-    /// white is (TB-2018-001).
-    #[must_use]
-    pub fn aces2065_1() -> &'static RgbSpace {
-        static SPACE: OnceLock<RgbSpace> = OnceLock::new();
-        let primaries = [[0.7347, 0.2653], [0.0, 1.0], [0.0001, -0.0770]];
-        SPACE.get_or_init(|| {
-            let space = standard("ACES2065-1", primaries, ACES, aces_d60());
-            #[cfg(feature = "wide-gamut")]
-            let space = space.with_built_in(RgbTable::ACES2065_1.clone());
-            space
-        })
-    }
-
-    /// ACEScg (ACES S-2014-004): the AP1 primaries, a working space for
-    /// rendering, and the ACES white; spectra under CIE daylight at 6000 K.
-    #[must_use]
-    pub fn acescg() -> &'static RgbSpace {
-        static SPACE: OnceLock<RgbSpace> = OnceLock::new();
-        let primaries = [[0.713, 0.293], [0.165, 0.830], [0.128, 0.044]];
-        SPACE.get_or_init(|| {
-            let space = standard("ACEScg", primaries, ACES, aces_d60());
-            #[cfg(feature = "wide-gamut")]
-            let space = space.with_built_in(RgbTable::ACESCG.clone());
-            space
-        })
-    }
-
-    /// The five built-in spaces.
-    #[must_use]
-    pub fn all() -> [&'static RgbSpace; 5] {
-        [Self::srgb(), Self::display_p3(), Self::rec2020(), Self::aces2065_1(), Self::acescg()]
+        Ok(RgbSpace { name, primaries, white, to_xyz, to_rgb, fit, table: Arc::default(), built_in: None })
     }
 
     /// The space's name (`sRGB`, `Display P3`, `Rec.2020`, `ACES2065-1`,
@@ -252,18 +179,30 @@ impl RgbSpace {
     }
 
     /// The space's table of sigmoid polynomials (`rgb_table::RESOLUTION`³
-    /// colours per case): a built-in space's is embedded in the program; a
-    /// space of the caller's own fits its table on first use (seconds to a
-    /// minute in a release build: [`RgbTable::fit`]), shared by its clones,
-    /// unless one was given ([`RgbSpace::with_table`]).
+    /// colours per case): a built-in space's is embedded in the program
+    /// (reached through `&RgbSpace`, any of the five: a program that calls
+    /// this links them all; the typed [`BuiltIn`](crate::color::space::BuiltIn)'s own
+    /// [`table`](crate::color::space::BuiltIn::table) links one); a space of the caller's own
+    /// fits its table on first use (seconds to a minute in a release
+    /// build: [`RgbTable::fit`]), shared by its clones, unless one was
+    /// given ([`RgbSpace::with_table`]).
     #[must_use]
     #[inline]
     pub fn table(&self) -> &RgbTable {
-        self.table.get_or_init(|| RgbTable::fit(self, RESOLUTION))
+        match self.built_in.and_then(BuiltInTable::table) {
+            Some(table) => table,
+            None => self.fitted_table(),
+        }
+    }
+
+    /// The table given, or fitted now (made compact) and kept.
+    pub(crate) fn fitted_table(&self) -> &RgbTable {
+        self.table.get_or_init(|| RgbTable::fit(self, RESOLUTION).compact())
     }
 
     /// The space with `table` as its table (one saved by
-    /// [`RgbTable::save`] and loaded back, or one a program ships): an
+    /// [`RgbTable::save`] and loaded back, one embedded by
+    /// [`crate::rgb_table!`], or one a program ships): an
     /// [`Error::TableSpace`] unless the table was fitted for this space
     /// (its XYZ → RGB matrix, balanced to the white of the space's
     /// illuminant, within 1e-9 of the space's: an illuminant of the same
@@ -273,36 +212,27 @@ impl RgbSpace {
             return Err(Error::TableSpace { table: table.header().name, space: self.name });
         }
         self.table = Arc::new(OnceLock::from(table));
+        self.built_in = None;
         Ok(self)
     }
 
     /// Whether `table` was fitted for this space: its matrix within 1e-9
     /// of the space's balanced one.
-    fn fitted_for(&self, table: &RgbTable) -> bool {
+    pub(crate) fn fitted_for(&self, table: &RgbTable) -> bool {
         let matrix = table.header().matrix;
         let mut same = matrix.iter().flatten().zip(self.fit.to_rgb.iter().flatten());
         same.all(|(a, b)| (a - b).abs() <= 1e-9 * b.abs().max(1.0))
-    }
-
-    /// A built-in space with its embedded table; were the table stale
-    /// (fitted for other matrices), the space would fit its own on first
-    /// use instead, and `tests/properties/rgb_table.rs` fails.
-    fn with_built_in(mut self, table: RgbTable) -> RgbSpace {
-        if self.fitted_for(&table) {
-            self.table = Arc::new(OnceLock::from(table));
-        }
-        self
     }
 }
 
 /// D65's white point (CIE 15: 0.3127, 0.3290 to four decimals, as the
 /// standards state it).
-const D65: Chromaticity = [0.3127, 0.3290];
+pub(crate) const D65: Chromaticity = [0.3127, 0.3290];
 /// The ACES white point (SMPTE ST 2065-1).
-const ACES: Chromaticity = [0.32168, 0.33767];
+pub(crate) const ACES: Chromaticity = [0.32168, 0.33767];
 
 /// A built-in space (its chromaticities are valid).
-fn standard(
+pub(crate) fn standard(
     name: &'static str,
     primaries: [Chromaticity; 3],
     white: Chromaticity,
@@ -313,7 +243,7 @@ fn standard(
 
 /// CIE daylight at 6000 K on the current c₂ scale (nominal 5996.7 K:
 /// [`lights::daylight`] takes nominal temperatures), 5 nm.
-fn aces_d60() -> &'static TabulatedSpectrum {
+pub(crate) fn aces_d60() -> &'static TabulatedSpectrum {
     static D60: OnceLock<TabulatedSpectrum> = OnceLock::new();
     D60.get_or_init(|| {
         lights::daylight(6000.0 * 1.4380 / 1.4388).unwrap_or_else(|_| unreachable!("6000 K is daylight"))

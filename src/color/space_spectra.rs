@@ -86,8 +86,7 @@ impl RgbSpace {
     /// NaN components are taken as 0.
     #[must_use]
     pub fn unbounded(&self, rgb: impl Into<LinearRgb>) -> RgbUnbounded {
-        let (scale, poly) = self.table().split(rgb.into(), Split::Twice);
-        RgbUnbounded::from_parts(scale, poly)
+        unbounded_in(self.table(), rgb.into(), Split::Twice)
     }
 
     /// Any colour as a non-negative spectrum, scaled "1 up to 1": a colour
@@ -97,8 +96,7 @@ impl RgbSpace {
     /// NaN components are taken as 0.
     #[must_use]
     pub fn unbounded_up_to_one(&self, rgb: impl Into<LinearRgb>) -> RgbUnbounded {
-        let (scale, poly) = self.table().split(rgb.into(), Split::UpToOne);
-        RgbUnbounded::from_parts(scale, poly)
+        unbounded_in(self.table(), rgb.into(), Split::UpToOne)
     }
 
     /// A light of colour `rgb`: [`RgbSpace::unbounded`]'s spectrum times
@@ -108,48 +106,32 @@ impl RgbSpace {
     /// light spectrum wants [`RgbSpace::unbounded`] instead.
     #[must_use]
     pub fn light(&self, rgb: impl Into<LinearRgb>) -> RgbIlluminant {
-        let (scale, poly) = self.table().split(rgb.into(), Split::Twice);
+        self.light_in(self.table(), rgb.into())
+    }
+
+    /// [`RgbSpace::light`] by `table` (the space's own, as the caller
+    /// found it).
+    pub(crate) fn light_in(&self, table: &RgbTable, rgb: LinearRgb) -> RgbIlluminant {
+        let (scale, poly) = table.split(rgb, Split::Twice);
         RgbIlluminant::from_parts(scale * Y_BAR_INTEGRAL / self.fit.white_y, poly, self.fit.illuminant)
     }
 }
 
+/// [`RgbSpace::unbounded`] (`Split::Twice`) or
+/// [`RgbSpace::unbounded_up_to_one`] by `table`.
+pub(crate) fn unbounded_in(table: &RgbTable, rgb: LinearRgb, split: Split) -> RgbUnbounded {
+    let (scale, poly) = table.split(rgb, split);
+    RgbUnbounded::from_parts(scale, poly)
+}
+
 impl RgbTable {
     /// The table of `space` with `resolution` nodes per axis (2 to 256),
-    /// fitted now: the full [`RESOLUTION`](super::rgb_table::RESOLUTION) takes seconds (sRGB) to a
-    /// minute (ACES2065-1) in a release build, on up to three threads.
+    /// fitted now, its coefficients as fitted (version 1, `f32`; 9.4 MB at
+    /// the full [`RESOLUTION`](super::rgb_table::RESOLUTION); [`RgbTable::compact`] makes it 1.5–2.3 MB):
+    /// seconds (sRGB) to a minute (ACES2065-1) in a release build, on up to
+    /// three threads.
     #[must_use]
     pub fn fit(space: &RgbSpace, resolution: usize) -> RgbTable {
         RgbTable::fitted(&space.fit, space.name(), resolution)
-    }
-}
-
-impl RgbAlbedo {
-    /// The reflectance whose colour under D65 is `rgb` (linear sRGB, each
-    /// component in [0, 1]; otherwise an [`Error::Albedo`]), fitted: about
-    /// 10 µs. [`RgbSpace::albedo`] does it in a lookup, in any space.
-    pub fn new(rgb: LinearRgb) -> Result<Self, Error> {
-        RgbSpace::srgb().fit_albedo(rgb)
-    }
-}
-
-impl RgbUnbounded {
-    /// Any linear sRGB colour as a non-negative spectrum:
-    /// [`RgbSpace::srgb`]'s [`unbounded`](RgbSpace::unbounded) (negative
-    /// and NaN components are taken as 0: outside the gamut, there is no
-    /// spectrum). The first call builds sRGB's table.
-    #[must_use]
-    pub fn new(rgb: LinearRgb) -> Self {
-        RgbSpace::srgb().unbounded(rgb)
-    }
-}
-
-impl RgbIlluminant {
-    /// A light of linear sRGB colour `rgb`: [`RgbSpace::srgb`]'s
-    /// [`light`](RgbSpace::light), the CIE's D65 tinted, normalised so that
-    /// (1, 1, 1) has the luminance of a constant spectrum of 1 (`Y = ∫ȳ`).
-    /// The first call builds sRGB's table.
-    #[must_use]
-    pub fn new(rgb: LinearRgb) -> Self {
-        RgbSpace::srgb().light(rgb)
     }
 }

@@ -92,7 +92,7 @@ fn a_fitted_rule_of_run_time_size() -> Result<(), speclab::Error> {
 /// under the space's illuminant is its RGB.
 #[test]
 fn an_rgb_textured_scene() -> Result<(), speclab::Error> {
-    const RED: RgbAlbedo = match RgbTable::SRGB.const_albedo([0.8, 0.1, 0.05]) {
+    const RED: RgbAlbedo = match RgbTable::SRGB.const_albedo(LinearRgb::new(0.8, 0.1, 0.05)) {
         Some(a) => a,
         None => panic!("in [0, 1]"),
     };

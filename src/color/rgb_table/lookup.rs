@@ -1,6 +1,8 @@
-//! The table's lookup, as `const fn`s over the table file's bytes: the
-//! same arithmetic at compile time (`RgbTable::const_albedo`) and at run
-//! time, in `f32`, with no search and no allocation.
+//! The table's lookup: where a colour falls (a `const fn`), and the
+//! eight coefficient triples around it interpolated, the same arithmetic
+//! at compile time (`RgbTable::const_albedo`, from the file's bytes) and
+//! at run time (from the decoded slabs), in `f32`, with no search and no
+//! allocation.
 //!
 //! The largest component `z` has its nodes at `g(k/(n − 1))`, `g` the
 //! smoothstep `3t² − 2t³` taken twice (pbrt-v4's placement: dense near 0
@@ -13,8 +15,7 @@
 //! trilinearly, linearly in `z` between its nodes: four lanes at a time
 //! at run time, the same operations in the same order, so the same bits.
 
-use speclab_tables::rgb_file::HEADER_LEN;
-
+use speclab_tables::rgb_file::{HEADER_LEN, VERSION_COMPACT, compact};
 use wide::f32x4;
 
 /// The node `k` of `n` of the largest component, in `f32` (computed in
@@ -110,11 +111,12 @@ pub(crate) struct Grid {
     guesses: [u8; KEYS],
 }
 
-/// Where a colour falls in a table: its first corner's triple and the
-/// fractions `[dx, dy, dz]` along the three axes.
+/// Where a colour falls in a table: its case, its first corner's node
+/// `[z, y, x]`, and the fractions `[dx, dy, dz]` along the three axes.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Place {
-    at: usize,
+    pub(crate) case: usize,
+    pub(crate) node: [usize; 3],
     d: [f32; 3],
 }
 
@@ -178,9 +180,16 @@ impl Grid {
         let (x, y) = (x * scale * self.last, y * scale * self.last);
         let (xi, yi) = (self.index(x), self.index(y));
         let dz = (z - self.nodes[k]) * self.inverse_widths[k];
-        let n = self.n;
-        let at = case * n * n * n + k * n * n + yi as usize * n + xi as usize;
-        Some(Place { at, d: [x - xi as f32, y - yi as f32, dz] })
+        Some(Place { case, node: [k, yi as usize, xi as usize], d: [x - xi as f32, y - yi as f32, dz] })
+    }
+
+    /// The slab of `place` and its first corner's index in it.
+    #[inline(always)]
+    pub(crate) const fn in_slab(&self, place: Place) -> (usize, usize) {
+        let [k, y, x] = place.node;
+        // Slabs of 8 z; one slab below 8 nodes.
+        let (slab, z) = if self.n >= 8 { (k >> 3, k & 7) } else { (0, k) };
+        (slab, (z * self.n + y) * self.n + x)
     }
 
     /// `floor(v)` of `v ≥ 0`, at most `n − 2`.
@@ -190,30 +199,47 @@ impl Grid {
         if i > top { top } else { i }
     }
 
-    /// The coefficients at `place` in the table `bytes`: eight triples
+    /// The coefficients at `place` in the checked table file `bytes`:
+    /// its eight corners read (version 1) or decoded (version 2), then
     /// interpolated trilinearly, linearly in `z` between its nodes.
     #[inline(always)]
     pub(crate) const fn interpolate(&self, bytes: &[u8], place: Place) -> [f32; 3] {
-        let (n, Place { at, d: [dx, dy, dz] }) = (self.n, place);
-        let low = plane(bytes, n, at, dx, dy);
-        let high = plane(bytes, n, at + n * n, dx, dy);
+        let [k, y, x] = place.node;
+        let c = if compact::word(bytes, 8) == VERSION_COMPACT {
+            compact::corners(bytes, &compact::Layout::read(bytes), place.case, k, y, x)
+        } else {
+            let n = self.n;
+            let at = ((place.case * n + k) * n + y) * n + x;
+            let (r, s) = (n, n * n);
+            [
+                triple(bytes, at),
+                triple(bytes, at + 1),
+                triple(bytes, at + r),
+                triple(bytes, at + r + 1),
+                triple(bytes, at + s),
+                triple(bytes, at + s + 1),
+                triple(bytes, at + s + r),
+                triple(bytes, at + s + r + 1),
+            ]
+        };
+        let [dx, dy, dz] = place.d;
+        let low = lerp(lerp(c[0], c[1], dx), lerp(c[2], c[3], dx), dy);
+        let high = lerp(lerp(c[4], c[5], dx), lerp(c[6], c[7], dx), dy);
         lerp(low, high, dz)
     }
 
-    /// [`Grid::interpolate`] at run time: the same operations in the same
-    /// order on four lanes at once (each corner's triple and the next
-    /// table entry's first coefficient, which is dropped), so the same
+    /// [`Grid::interpolate`] at run time, from the place's decoded slab:
+    /// the same operations in the same order on four lanes at once (each
+    /// corner's triple and the next float, which is dropped), so the same
     /// bits, and faster: one bounds check per two corners.
     #[inline(always)]
-    pub(crate) fn interpolate_lanes(&self, bytes: &[u8], place: Place) -> [f32; 3] {
-        let (n, Place { at, d }) = (self.n, place);
-        let [dx, dy, dz] = d.map(f32x4::splat);
-        let (at, row, slice) = (HEADER_LEN + 12 * at, 12 * n, 12 * n * n);
-        let lane = |b: &[u8; 28], i: usize| f32::from_le_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+    pub(crate) fn interpolate_lanes(&self, slab: &[f32], at: usize, place: Place) -> [f32; 3] {
+        let n = self.n;
+        let [dx, dy, dz] = place.d.map(f32x4::splat);
+        let (at, row, slice) = (3 * at, 3 * n, 3 * n * n);
         let pair = |at: usize| {
-            let b = bytes.get(at..).and_then(<[u8]>::first_chunk::<28>).copied().unwrap_or([0; 28]);
-            let first = f32x4::from([lane(&b, 0), lane(&b, 4), lane(&b, 8), lane(&b, 12)]);
-            (first, f32x4::from([lane(&b, 12), lane(&b, 16), lane(&b, 20), lane(&b, 24)]))
+            let f = slab.get(at..).and_then(<[f32]>::first_chunk::<7>).copied().unwrap_or([0.0; 7]);
+            (f32x4::from([f[0], f[1], f[2], f[3]]), f32x4::from([f[3], f[4], f[5], f[6]]))
         };
         let lerp = |a: f32x4, b: f32x4, t: f32x4| a + t * (b - a);
         let plane = |at: usize| {
@@ -225,23 +251,15 @@ impl Grid {
     }
 }
 
-/// One plane of four triples from `at` (x, x + 1, and the row above),
-/// bilinearly.
-#[inline(always)]
-const fn plane(bytes: &[u8], n: usize, at: usize, dx: f32, dy: f32) -> [f32; 3] {
-    let low = lerp(triple(bytes, at), triple(bytes, at + 1), dx);
-    let high = lerp(triple(bytes, at + n), triple(bytes, at + n + 1), dx);
-    lerp(low, high, dy)
-}
-
 /// `a + t(b − a)`, each component.
 #[inline(always)]
 const fn lerp(a: [f32; 3], b: [f32; 3], t: f32) -> [f32; 3] {
     [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])]
 }
 
-/// The coefficient triple number `i` (zeros past the end, which a checked
-/// table never reaches): one bounds check for twelve bytes.
+/// The coefficient triple number `i` of a version-1 file (zeros past the
+/// end, which a checked table never reaches): one bounds check for twelve
+/// bytes.
 #[inline(always)]
 const fn triple(bytes: &[u8], i: usize) -> [f32; 3] {
     let at = HEADER_LEN + 12 * i;
@@ -288,7 +306,7 @@ mod tests {
     #[test]
     fn ties_take_pbrt_v4s_case_and_the_smallest_normal_has_a_place() {
         let grid = Grid::new(64);
-        let case = |rgb: [f32; 3]| grid.locate(rgb).map(|p| p.at / (64 * 64 * 64));
+        let case = |rgb: [f32; 3]| grid.locate(rgb).map(|p| p.case);
         assert_eq!(case([0.5, 0.5, 0.2]), Some(1));
         assert_eq!(case([0.6, 0.5, 0.6]), Some(2));
         assert_eq!(case([0.2, 0.7, 0.7]), Some(2));
@@ -305,7 +323,7 @@ mod tests {
     fn a_component_equal_to_the_largest_ends_the_last_interval() {
         let grid = Grid::new(64);
         let place = grid.locate([0.5, 0.5, 0.2]).expect("a place");
-        let (x, y) = (place.at % 64, place.at / 64 % 64);
+        let [_, y, x] = place.node;
         assert_eq!((x, y), (25, 62), "green is largest: x is blue, y red");
         assert_eq!(place.d[1], 1.0);
         assert!((place.d[0] - 0.2).abs() < 1e-5, "{:?}", place.d);

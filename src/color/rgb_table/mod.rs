@@ -11,19 +11,23 @@
 //!
 //! **Data, not a start-up cost.** The built-in spaces' tables are fitted
 //! once, by `cargo run --release -p speclab-tools --bin rgb-tables`, and
-//! embedded at build time ([`RgbTable::SRGB`](crate::color::rgb_table::RgbTable::SRGB) and its siblings): nothing is
-//! fitted when a program starts, and a colour of a built-in space is a
-//! `const` ([`RgbTable::const_albedo`](crate::color::rgb_table::RgbTable::const_albedo)). A table is its file: one
-//! versioned, checksummed layout (`speclab_tables::rgb_file`), `3 · 64³`
-//! triples of `f32`, 9.4 MB per space, shared by every clone (an `Arc`, or
-//! the program's own static data). A space the caller defines builds its
-//! table on first use ([`RgbTable::fit`](crate::color::rgb_table::RgbTable::fit): seconds to a minute in a release
-//! build), which [`RgbTable::save`](crate::color::rgb_table::RgbTable::save) keeps and [`RgbTable::load`](crate::color::rgb_table::RgbTable::load) reads
-//! back, checked.
+//! embedded at build time, compact ([`RgbTable::SRGB`] and its siblings,
+//! `speclab_tables::rgb_file` version 2: each node rounded to what its
+//! spectrum needs, predicted from its neighbours and Huffman-coded;
+//! 1.5–2.3 MB per space). A lookup decodes the slab of 8 `z` it needs the
+//! first time (about 4 ms; the whole table about 0.1 s), and keeps it:
+//! nothing is fitted when a program starts, and a colour of a built-in
+//! space is a `const` ([`RgbTable::const_albedo`], which decodes the
+//! colour's corners at compile time, to the run-time lookup's bits). A
+//! table is its file, shared by every clone (an `Arc`, or the program's
+//! own static data). A space the caller defines fits its table on first
+//! use ([`RgbTable::fit`]: seconds to a minute in a release build), which
+//! [`RgbTable::save`] keeps and [`RgbTable::load`] reads back, checked, or
+//! a downstream crate embeds ([`crate::rgb_table!`]).
 //!
 //! ```
 //! use speclab::color::{LinearRgb, RgbAlbedo, rgb_table::RgbTable, space::RgbSpace};
-//! const ORANGE: RgbAlbedo = RgbTable::SRGB.const_albedo([0.8, 0.35, 0.05]).unwrap();
+//! const ORANGE: RgbAlbedo = RgbTable::SRGB.const_albedo(LinearRgb::new(0.8, 0.35, 0.05)).unwrap();
 //! let looked_up = RgbSpace::srgb().albedo(LinearRgb::new(0.8, 0.35, 0.05))?;
 //! assert_eq!(ORANGE, looked_up);
 //! assert!(RgbSpace::srgb().rgb_of(&ORANGE).distance(LinearRgb::new(0.8, 0.35, 0.05)) < 1e-3);
@@ -35,14 +39,17 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+mod builtin;
+pub(crate) use builtin::BuiltInTable;
 mod fit;
 mod lookup;
+mod slabs;
 
 use std::fmt;
 use std::path::Path;
 use std::sync::Arc;
 
-use speclab_tables::rgb_file;
+use speclab_tables::rgb_file::{self, Header, VERSION_COMPACT, VERSION_F32, compact};
 
 use crate::color::RgbAlbedo;
 use crate::color::rgb::LinearRgb;
@@ -53,83 +60,80 @@ use crate::spectrum::SigmoidPolynomial;
 
 use crate::spectrum::sigmoid::constant;
 pub use lookup::node;
+pub use slabs::SlabCache;
+/// How a compact table rounds its nodes (`speclab_tables::rgb_file::quantize`).
+pub use speclab_tables::rgb_file::quantize::Quantizer;
 
 /// Nodes per axis of the built-in tables.
 pub const RESOLUTION: usize = 64;
 
-/// Sigmoid-polynomial coefficients on a grid of colours: a table file's
-/// bytes (header, `f32` coefficients, checksum), checked when made.
+/// Sigmoid-polynomial coefficients on a grid of colours: a checked table
+/// file's bytes (version 2, compact, or version 1, `f32`) and its slabs,
+/// decoded as colours need them.
 #[derive(Clone)]
 pub struct RgbTable {
-    bytes: Bytes,
+    source: Source,
     /// Nodes per axis, the nodes, and how a colour finds its place.
     grid: lookup::Grid,
 }
 
-/// Where the bytes live: the program's static data, or shared on the heap.
+/// Where the bytes and their slabs live: the program's static data, or
+/// shared on the heap.
 #[derive(Clone)]
-enum Bytes {
-    Static(&'static [u8]),
-    Shared(Arc<[u8]>),
+enum Source {
+    Static { bytes: &'static [u8], slabs: &'static SlabCache },
+    Shared(Arc<(Box<[u8]>, SlabCache)>),
 }
 
-/// sRGB's table file, once in the program (a static array: a `const`, or
-/// a static reference to the bytes, could be copied into every place that
-/// uses it).
-static SRGB_FILE: [u8; include_bytes!("../../../data/rgb/srgb.rgbt").len()] =
-    *include_bytes!("../../../data/rgb/srgb.rgbt");
-
 impl RgbTable {
-    /// Linear sRGB's table ([`RgbSpace::srgb`](crate::color::RgbSpace::srgb)'s), embedded at build time
-    /// (`data/rgb/srgb.rgbt`).
-    pub const SRGB: &RgbTable = &RgbTable::embedded(&SRGB_FILE);
-    /// Display P3's table ([`RgbSpace::display_p3`](crate::color::RgbSpace::display_p3)'s), from
-    /// `speclab-wide-gamut` (feature `wide-gamut`, on by default).
-    #[cfg(feature = "wide-gamut")]
-    pub const DISPLAY_P3: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::DISPLAY_P3);
-    /// Rec.2020's table ([`RgbSpace::rec2020`](crate::color::RgbSpace::rec2020)'s), as [`RgbTable::DISPLAY_P3`](crate::color::rgb_table::RgbTable::DISPLAY_P3).
-    #[cfg(feature = "wide-gamut")]
-    pub const REC2020: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::REC2020);
-    /// ACES2065-1's table ([`RgbSpace::aces2065_1`](crate::color::RgbSpace::aces2065_1)'s), as [`RgbTable::DISPLAY_P3`](crate::color::rgb_table::RgbTable::DISPLAY_P3).
-    #[cfg(feature = "wide-gamut")]
-    pub const ACES2065_1: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACES2065_1);
-    /// ACEScg's table ([`RgbSpace::acescg`](crate::color::RgbSpace::acescg)'s), as [`RgbTable::DISPLAY_P3`](crate::color::rgb_table::RgbTable::DISPLAY_P3).
-    #[cfg(feature = "wide-gamut")]
-    pub const ACESCG: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACESCG);
-
-    /// A table built into the program (checked by the build script).
-    const fn embedded(bytes: &'static [u8]) -> RgbTable {
-        let n = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]) as usize;
-        RgbTable::with_bytes(Bytes::Static(bytes), n)
+    /// The table of the table file `bytes`, embedded in the program with
+    /// its slabs' cache: what [`crate::rgb_table!`] and the built-in tables
+    /// use. The bytes must be a file `speclab_tables::rgb_file::parse`
+    /// accepts (a build script checks it with `check_file`): other bytes
+    /// give wrong colours, never a panic.
+    #[must_use]
+    pub const fn embedded(bytes: &'static [u8], slabs: &'static SlabCache) -> RgbTable {
+        let n = compact::word(bytes, 12) as usize;
+        let n = if n < 2 {
+            2
+        } else if n > lookup::MAX_NODES {
+            lookup::MAX_NODES
+        } else {
+            n
+        };
+        RgbTable { source: Source::Static { bytes, slabs }, grid: lookup::Grid::new(n) }
     }
 
-    /// The table of checked `bytes` of `n` nodes per axis, with its grid.
-    const fn with_bytes(bytes: Bytes, n: usize) -> RgbTable {
-        RgbTable { bytes, grid: lookup::Grid::new(n) }
+    /// The table of a checked file's `bytes` on the heap.
+    fn shared(bytes: Box<[u8]>, n: usize) -> RgbTable {
+        RgbTable { source: Source::Shared(Arc::new((bytes, SlabCache::new()))), grid: lookup::Grid::new(n) }
     }
 
     /// A table fitted by `fit` for the space named `name`, `n` nodes per
-    /// axis (clamped into 2 to 256): what [`RgbTable::fit`](crate::color::rgb_table::RgbTable::fit) makes.
+    /// axis (clamped into 2 to 256), its coefficients as fitted (version
+    /// 1): what [`RgbTable::fit`] makes.
     pub(crate) fn fitted(fit: &Fit, name: &str, n: usize) -> RgbTable {
         let n = n.clamp(2, rgb_file::MAX_RESOLUTION as usize);
-        let header = rgb_file::Header { resolution: n as u32, matrix: fit.to_rgb, name: name.into() };
+        let header =
+            Header { version: VERSION_F32, resolution: n as u32, matrix: fit.to_rgb, name: name.into() };
         let mut bytes = rgb_file::encode_header(&header);
         for triple in fit::coefficients(fit, n) {
             bytes.extend(triple.iter().flat_map(|v| v.to_le_bytes()));
         }
         rgb_file::finish(&mut bytes);
-        RgbTable::with_bytes(Bytes::Shared(bytes.into()), n)
+        RgbTable::shared(bytes.into(), n)
     }
 
-    /// The table in `bytes`, a table file's contents, checked (magic,
-    /// version, length, checksum, finite numbers); `origin` names it in
-    /// the error.
+    /// The table in `bytes`, a table file's contents (version 1 or 2),
+    /// checked whole (magic, version, lengths, checksum, codes, every
+    /// number finite: a compact file decoded once, about 0.1 s); `origin`
+    /// names it in the error.
     pub fn from_bytes(bytes: &[u8], origin: &str) -> Result<RgbTable, Error> {
         let header = rgb_file::parse(bytes, origin).map_err(Error::TableFile)?;
-        Ok(RgbTable::with_bytes(Bytes::Shared(bytes.into()), header.resolution as usize))
+        Ok(RgbTable::shared(bytes.into(), header.resolution as usize))
     }
 
-    /// The table in the file at `path`, checked as [`RgbTable::from_bytes`](crate::color::rgb_table::RgbTable::from_bytes).
+    /// The table in the file at `path`, checked as [`RgbTable::from_bytes`].
     pub fn load(path: impl AsRef<Path>) -> Result<RgbTable, Error> {
         let path = path.as_ref();
         let bytes = std::fs::read(path)
@@ -137,20 +141,88 @@ impl RgbTable {
         RgbTable::from_bytes(&bytes, &path.display().to_string())
     }
 
-    /// Writes the table to `path` in the table file format.
+    /// Writes the table to `path` as its file (the version it has).
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), Error> {
         let path = path.as_ref();
         std::fs::write(path, self.as_bytes())
             .map_err(|source| Error::Read(ReadError::Io { path: path.to_path_buf(), source }))
     }
 
+    /// The table made compact (version 2) with the built-in tables'
+    /// rounding ([`Quantizer::DEFAULT`]): [`RgbTable::compact_with`].
+    #[must_use]
+    pub fn compact(&self) -> RgbTable {
+        self.compact_with(Quantizer::DEFAULT)
+    }
+
+    /// The table made compact (version 2) with `quantizer`'s rounding
+    /// (`speclab_tables::rgb_file::compact`): itself if it is compact with
+    /// that rounding, else its coefficients as the lookup reads them,
+    /// rounded and coded. The same coefficients give the same bytes.
+    #[must_use]
+    pub fn compact_with(&self, quantizer: Quantizer) -> RgbTable {
+        if self.quantizer() == Some(quantizer) {
+            return self.clone();
+        }
+        let n = self.grid.n;
+        let bytes = compact::encode(&self.header(), quantizer, n, &self.coefficients());
+        RgbTable::shared(bytes.into(), n)
+    }
+
+    /// The rounding of a compact table (`None` for version 1).
+    #[must_use]
+    pub fn quantizer(&self) -> Option<Quantizer> {
+        let bytes = self.as_bytes();
+        (compact::word(bytes, 8) == VERSION_COMPACT).then(|| compact::Layout::read(bytes).quantizer)
+    }
+
+    /// Every node's coefficients as the lookup reads them, `[case][z][y][x]`.
+    #[must_use]
+    pub fn coefficients(&self) -> Vec<[f32; 3]> {
+        let n = self.grid.n;
+        let count = slabs::count(n);
+        let mut out = Vec::with_capacity(3 * n * n * n);
+        for case in 0..3 {
+            for s in 0..count {
+                let (z0, z1) = slabs::z_range(n, s);
+                // The last z of a slab is the next one's first.
+                let own = if s + 1 < count { z1 - z0 } else { z1 - z0 + 1 };
+                let slab = self.slab(case, s);
+                out.extend(slab[..3 * own * n * n].chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
+            }
+        }
+        out
+    }
+
     /// The table's file, as bytes.
     #[must_use]
     pub fn as_bytes(&self) -> &[u8] {
-        match &self.bytes {
-            Bytes::Static(b) => b,
-            Bytes::Shared(b) => b,
+        match &self.source {
+            Source::Static { bytes, .. } => bytes,
+            Source::Shared(shared) => &shared.0,
         }
+    }
+
+    /// Slab `s` of case `case` (decoded now if it is not yet).
+    #[inline(always)]
+    fn slab(&self, case: usize, s: usize) -> &[f32] {
+        match &self.source {
+            Source::Static { bytes, slabs } => slabs.get(bytes, self.grid.n, case, s),
+            Source::Shared(shared) => shared.1.get(&shared.0, self.grid.n, case, s),
+        }
+    }
+
+    /// How many of the table's slabs are decoded, of how many (three cases
+    /// of `⌈(n − 1)/8⌉`): what the table costs in memory now, 0.44 MB a slab.
+    #[must_use]
+    pub fn decoded_slabs(&self) -> (usize, usize) {
+        let cache = match &self.source {
+            Source::Static { slabs, .. } => *slabs,
+            Source::Shared(shared) => &shared.1,
+        };
+        let count = slabs::count(self.grid.n);
+        let decoded = (0..3).flat_map(|c| (0..count).map(move |s| (c, s)));
+        (decoded.filter(|&(c, s)| cache.decoded(c, s).is_some()).count(), 3 * count)
     }
 
     /// Nodes per axis.
@@ -159,11 +231,12 @@ impl RgbTable {
         self.grid.n
     }
 
-    /// What the file says of itself: the space's name and the XYZ → RGB
-    /// matrix the table was fitted for.
+    /// What the file says of itself: its version, the space's name and the
+    /// XYZ → RGB matrix the table was fitted for.
     #[must_use]
-    pub fn header(&self) -> rgb_file::Header {
-        let unreadable = || rgb_file::Header {
+    pub fn header(&self) -> Header {
+        let unreadable = || Header {
+            version: 0,
             resolution: self.grid.n as u32,
             matrix: [[0.0; 3]; 3],
             name: String::new(),
@@ -179,13 +252,16 @@ impl RgbTable {
         Ok(RgbAlbedo::from_polynomial(self.lookup(albedo_components(rgb.into())?)))
     }
 
-    /// [`RgbTable::albedo`](crate::color::rgb_table::RgbTable::albedo) at compile time, for a table built into the
-    /// program ([`RgbTable::SRGB`](crate::color::rgb_table::RgbTable::SRGB) and its siblings): `None` for a
-    /// component outside [0, 1], or for a table loaded or fitted at run
-    /// time. The same coefficients as at run time, to the bit.
+    /// [`RgbTable::albedo`] at compile time, for a table embedded in the
+    /// program ([`RgbTable::SRGB`] and its siblings, [`crate::rgb_table!`]):
+    /// `None` for a component outside [0, 1], or for a table loaded or
+    /// fitted at run time. The same coefficients as at run time, to the
+    /// bit; the colour's corners decoded at compile time (a few hundred
+    /// thousand steps of the compiler's evaluation: one colour per `const`).
     #[must_use]
-    pub const fn const_albedo(&self, rgb: [f32; 3]) -> Option<RgbAlbedo> {
-        let Bytes::Static(bytes) = &self.bytes else { return None };
+    pub const fn const_albedo(&self, rgb: LinearRgb) -> Option<RgbAlbedo> {
+        let Source::Static { bytes, .. } = &self.source else { return None };
+        let rgb = rgb.to_array();
         let mut i = 0;
         while i < 3 {
             if !(rgb[i] >= 0.0 && rgb[i] <= 1.0) {
@@ -194,8 +270,8 @@ impl RgbTable {
             i += 1;
         }
         let poly = if rgb[0] == rgb[1] && rgb[1] == rgb[2] {
-            constant(rgb[0] as f64)
-        } else if let Some(place) = self.grid.locate(rgb) {
+            constant(rgb[0])
+        } else if let Some(place) = self.grid.locate([rgb[0] as f32, rgb[1] as f32, rgb[2] as f32]) {
             let c = self.grid.interpolate(bytes, place);
             SigmoidPolynomial::new([c[0] as f64, c[1] as f64, c[2] as f64])
         } else {
@@ -228,7 +304,9 @@ impl RgbTable {
         }
         // Components below f32's smallest normal number are black.
         let Some(place) = self.grid.locate(rgb.map(|v| v as f32)) else { return SigmoidPolynomial::BLACK };
-        SigmoidPolynomial::new(self.grid.interpolate_lanes(self.as_bytes(), place).map(f64::from))
+        let (s, at) = self.grid.in_slab(place);
+        let c = self.grid.interpolate_lanes(self.slab(place.case, s), at, place);
+        SigmoidPolynomial::new(c.map(f64::from))
     }
 }
 
@@ -240,12 +318,13 @@ impl PartialEq for RgbTable {
 
 impl fmt::Debug for RgbTable {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let kind = match self.bytes {
-            Bytes::Static(_) => "built in",
-            Bytes::Shared(_) => "shared",
+        let kind = match self.source {
+            Source::Static { .. } => "built in",
+            Source::Shared(_) => "shared",
         };
         f.debug_struct("RgbTable")
             .field("resolution", &self.grid.n)
+            .field("version", &compact::word(self.as_bytes(), 8))
             .field("bytes", &self.as_bytes().len())
             .field("kind", &kind)
             .finish()

@@ -1,0 +1,145 @@
+//! The compact format on small made-up tables: encoding and decoding agree
+//! node for node, slab for slab and corner for corner; decoding the nodes
+//! and encoding them again gives the same bytes; and every part of a file
+//! that is wrong is named.
+
+use super::*;
+use crate::rgb_file::quantize::Node;
+use crate::rgb_file::{FileErrorKind, Header, finish, parse};
+
+/// A smooth field of coefficients over `n³` nodes per case, with both
+/// forms (bumps whose vertex lies inside, ramps whose vertex lies far),
+/// black at `z = 0` and large saturated values.
+fn table(n: usize) -> Vec<[f32; 3]> {
+    let mut out = Vec::new();
+    for case in 0..3 {
+        for z in 0..n {
+            for y in 0..n {
+                for x in 0..n {
+                    let (fz, fy, fx) = [z, y, x].map(|v| v as f64 / (n - 1) as f64).into();
+                    let c = if z == 0 {
+                        [0.0, 0.0, -1e4]
+                    } else if (x + y + case) % 5 == 0 {
+                        [1e-3 * fx, 30.0 * fy - 10.0, -12.0 + fz]
+                    } else {
+                        let a = -(20.0 + 3000.0 * fz * fz * fx) * if case == 1 { -1.0 } else { 1.0 };
+                        [a, -2.0 * a * (0.2 + 0.5 * fy), -5.0 + 40.0 * fx * fz]
+                    };
+                    out.push(c.map(|v| v as f32));
+                }
+            }
+        }
+    }
+    out
+}
+
+fn header(n: usize) -> Header {
+    Header {
+        version: 2,
+        resolution: n as u32,
+        matrix: [[1.0, 0.1, 0.0], [0.0, 1.0, 0.0], [0.0, -0.2, 1.0]],
+        name: "made up".into(),
+    }
+}
+
+/// Node for node, slab for slab, corner for corner, at sizes that fill
+/// blocks and that do not.
+#[test]
+fn decoding_gives_the_rounded_nodes() {
+    let q = Quantizer::DEFAULT;
+    for n in [2, 5, 8, 9, 17] {
+        let c = table(n);
+        let bytes = encode(&header(n), q, n, &c);
+        assert_eq!(parse(&bytes, "t").map(|h| h.version), Ok(2), "n = {n}");
+        let nodes: Vec<Node> = c.iter().map(|&c| q.node(c)).collect();
+        assert!(nodes.iter().any(|n| n.vertex) && nodes.iter().any(|n| !n.vertex));
+        assert_eq!(decode_nodes(&bytes), nodes, "n = {n}");
+        let layout = Layout::read(&bytes);
+        let b = n.min(BLOCK_MAX);
+        for case in 0..3 {
+            for s in 0..(n - 1).div_ceil(b) {
+                let slab = decode_slab(&bytes, &layout, case, s);
+                let z0 = s * b;
+                for (i, got) in slab.iter().enumerate() {
+                    assert_eq!(
+                        *got,
+                        q.coefficients(nodes[case * n * n * n + z0 * n * n + i]),
+                        "n {n} slab {s} node {i}"
+                    );
+                }
+            }
+            let last = n - 2;
+            for (z, y, x) in [
+                (0, 0, 0),
+                (last, last, last),
+                (b.min(last), 1.min(last), n / 2 - 1),
+                ((n / 2).min(last), (b - 1).min(last), 0),
+            ] {
+                let corners = corners(&bytes, &layout, case, z, y, x);
+                for (k, got) in corners.iter().enumerate() {
+                    let at = ((case * n + z + k / 4) * n + y + k / 2 % 2) * n + x + k % 2;
+                    assert_eq!(
+                        *got,
+                        q.coefficients(nodes[at]),
+                        "n {n} case {case} corner {k} of {z} {y} {x}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Decoded nodes encode to the very bytes they came from.
+#[test]
+fn decode_then_encode_gives_the_same_bytes() {
+    for n in [3, 8, 12] {
+        let bytes = encode(&header(n), Quantizer::DEFAULT, n, &table(n));
+        assert_eq!(encode_nodes(&header(n), Quantizer::DEFAULT, n, &decode_nodes(&bytes)), bytes);
+    }
+}
+
+/// `bytes` with the 32-bit word at `at` set to `value`, checksum redone.
+fn with_word(bytes: &[u8], at: usize, value: u32) -> Vec<u8> {
+    let mut b = bytes[..bytes.len() - 8].to_vec();
+    b[at..at + 4].copy_from_slice(&value.to_le_bytes());
+    finish(&mut b);
+    b
+}
+
+/// Each part of a compact file, wrong, is an error that names it.
+#[test]
+fn wrong_parts_are_named() {
+    let n = 9;
+    let good = encode(&header(n), Quantizer::DEFAULT, n, &table(n));
+    let layout = Layout::read(&good);
+    let kind = |bytes: &[u8]| parse(bytes, "t").unwrap_err().kind;
+    let param =
+        |name| move |k: FileErrorKind| matches!(k, FileErrorKind::Parameter { name: m, .. } if m == name);
+    assert!(param("mantissa bits")(kind(&with_word(&good, 128, 0))));
+    assert!(param("mantissa bits")(kind(&with_word(&good, 128, 24))));
+    assert!(param("low exponent")(kind(&with_word(&good, 132, 1))));
+    assert!(param("vertex bits")(kind(&with_word(&good, 136, 3))));
+    assert!(param("block side")(kind(&with_word(&good, 140, 4))));
+    assert!(param("reserved")(kind(&with_word(&good, 156, 1))));
+    assert!(param("block count")(kind(&with_word(&good, 148, 7))));
+    assert!(matches!(kind(&with_word(&good, 152, 1)), FileErrorKind::Length { .. }));
+    // A code with three one-bit codes.
+    let over = with_word(&good, layout.tables[5], 3);
+    assert_eq!(kind(&over), FileErrorKind::Code { table: 5 });
+    // Offsets that fall back, and a stream cut short of its last block.
+    let blocks = layout.blocks();
+    let falling = with_word(&good, layout.offsets + 4 * 3, 1_000_000);
+    assert_eq!(kind(&falling), FileErrorKind::Block { block: 3 });
+    let first = with_word(&good, layout.offsets, 1);
+    assert_eq!(kind(&first), FileErrorKind::Block { block: 0 });
+    // A block's bits changed: it no longer decodes within its bytes, or
+    // decodes to other numbers (which the checksum alone would catch).
+    let (start, end) = layout.block_bytes(&good, blocks - 1);
+    let mut flipped = good[..good.len() - 8].to_vec();
+    flipped[start] ^= 0xff;
+    flipped[end - 1] ^= 0x0f;
+    finish(&mut flipped);
+    assert!(parse(&flipped, "t").is_err() || decode_nodes(&flipped) != decode_nodes(&good));
+    let e = parse(&good[..good.len() - 20], "cut.rgbt").unwrap_err();
+    assert!(e.to_string().starts_with("cut.rgbt: expected"), "{e}");
+}

@@ -1,0 +1,237 @@
+//! Canonical Huffman codes, at most [`MAX_LEN`] bits: built from symbol
+//! counts by the encoder, stored as the number of codes of each length and
+//! the symbols in code order, and decoded one bit at a time by a `const fn`
+//! (Mark Adler's `puff` way: no table to build, the same at compile time
+//! and at run time).
+//!
+//! ```
+//! use speclab_tables::rgb_file::{bits::{BitReader, BitWriter}, huffman::Code};
+//! let code = Code::from_counts(&[50, 20, 20, 9, 1]);
+//! let mut w = BitWriter::default();
+//! for s in [0, 4, 2, 0] { code.write(&mut w, s); }
+//! let bytes = w.finish();
+//! let stored = code.to_bytes();
+//! let mut r = BitReader::new(&bytes, 0, bytes.len());
+//! let read: Vec<_> = (0..4).map(|_| speclab_tables::rgb_file::huffman::decode(&mut r, &stored, 0)).collect();
+//! assert_eq!(read, [Some(0), Some(4), Some(2), Some(0)]);
+//! ```
+
+use crate::rgb_file::bits::{BitReader, BitWriter};
+
+/// The longest code.
+pub const MAX_LEN: usize = 15;
+
+/// A canonical code: each symbol's length (0 for a symbol never used).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Code {
+    lengths: Vec<u8>,
+    /// Each symbol's code, canonically: by length, then by value.
+    codes: Vec<u32>,
+}
+
+impl Code {
+    /// The optimal code of at most [`MAX_LEN`] bits for symbols seen
+    /// `counts[s]` times (Huffman's, with the counts halved until it fits).
+    /// A lone symbol gets one bit.
+    #[must_use]
+    pub fn from_counts(counts: &[u64]) -> Code {
+        let mut counts = counts.to_vec();
+        loop {
+            let lengths = huffman_lengths(&counts);
+            if lengths.iter().all(|&l| usize::from(l) <= MAX_LEN) {
+                return Code::canonical(lengths);
+            }
+            for c in counts.iter_mut().filter(|c| **c > 0) {
+                *c = (*c).div_ceil(2);
+            }
+        }
+    }
+
+    /// Each symbol's length.
+    #[must_use]
+    pub fn lengths(&self) -> &[u8] {
+        &self.lengths
+    }
+
+    /// How many codes of each length, 1 to [`MAX_LEN`].
+    fn counts(&self) -> [u8; MAX_LEN + 1] {
+        let mut n = [0u8; MAX_LEN + 1];
+        for &l in &self.lengths {
+            n[usize::from(l)] += 1;
+        }
+        n[0] = 0;
+        n
+    }
+
+    /// The stored form: [`MAX_LEN`] counts (lengths 1, 2, …), then the
+    /// used symbols by length, then by value, one byte each.
+    #[must_use]
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut out = self.counts()[1..].to_vec();
+        for len in 1..=MAX_LEN as u8 {
+            out.extend((0..self.lengths.len()).filter(|&s| self.lengths[s] == len).map(|s| s as u8));
+        }
+        out
+    }
+
+    /// Writes symbol `s`'s code (nothing for a symbol without one).
+    pub fn write(&self, out: &mut BitWriter, s: usize) {
+        out.put(u64::from(self.codes[s]), u32::from(self.lengths[s]));
+    }
+
+    /// The canonical codes of these lengths: each length's first code
+    /// follows the last of the length before, shifted; within a length,
+    /// codes rise with the symbol.
+    fn canonical(lengths: Vec<u8>) -> Code {
+        let mut next = [0u32; MAX_LEN + 2];
+        let mut count = [0u32; MAX_LEN + 1];
+        for &l in &lengths {
+            count[usize::from(l)] += 1;
+        }
+        count[0] = 0;
+        for l in 1..=MAX_LEN {
+            next[l + 1] = (next[l] + count[l]) << 1;
+        }
+        let codes = lengths
+            .iter()
+            .map(|&l| {
+                let l = usize::from(l);
+                next[l] += 1;
+                next[l] - 1
+            })
+            .collect();
+        Code { lengths, codes }
+    }
+}
+
+/// Huffman's lengths for `counts` (0 for unused symbols; 1 for a lone one).
+fn huffman_lengths(counts: &[u64]) -> Vec<u8> {
+    let mut lengths = vec![0u8; counts.len()];
+    // Each tree: its weight and its symbols.
+    let mut trees: Vec<(u64, Vec<usize>)> =
+        (0..counts.len()).filter(|&s| counts[s] > 0).map(|s| (counts[s], vec![s])).collect();
+    if trees.len() == 1 {
+        lengths[trees[0].1[0]] = 1;
+    }
+    while trees.len() > 1 {
+        trees.sort_by(|a, b| b.0.cmp(&a.0).then(b.1[0].cmp(&a.1[0])));
+        let (wa, a) = trees.pop().unwrap_or_default();
+        let (wb, b) = trees.pop().unwrap_or_default();
+        for &s in a.iter().chain(&b) {
+            lengths[s] = lengths[s].saturating_add(1);
+        }
+        trees.push((wa + wb, [a, b].concat()));
+    }
+    lengths
+}
+
+/// The length in bytes of the stored code at `at` in `bytes` (its counts
+/// and symbols), or `None` if they do not fit in `bytes`.
+#[must_use]
+pub const fn stored_len(bytes: &[u8], at: usize) -> Option<usize> {
+    if at + MAX_LEN > bytes.len() {
+        return None;
+    }
+    let mut used = 0;
+    let mut l = 0;
+    while l < MAX_LEN {
+        used += bytes[at + l] as usize;
+        l += 1;
+    }
+    if at + MAX_LEN + used > bytes.len() { None } else { Some(MAX_LEN + used) }
+}
+
+/// Whether the stored code at `at` is a prefix code over an alphabet of
+/// `alphabet` symbols: no length over-subscribed, every symbol in the
+/// alphabet (its length checked by [`stored_len`] first).
+#[must_use]
+pub fn stored_is_valid(bytes: &[u8], at: usize, alphabet: usize) -> bool {
+    let mut left: i64 = 1;
+    let mut used = 0;
+    for l in 0..MAX_LEN {
+        left = 2 * left - i64::from(bytes[at + l]);
+        used += usize::from(bytes[at + l]);
+        if left < 0 {
+            return false;
+        }
+    }
+    bytes[at + MAX_LEN..at + MAX_LEN + used].iter().all(|&s| usize::from(s) < alphabet)
+}
+
+/// The next symbol, by the stored code at `at` in `bytes`: `None` for bits
+/// that are no code of it (an incomplete code). The next [`MAX_LEN`] bits
+/// are peeked at once and compared with each length's first code.
+#[inline(always)]
+#[must_use]
+pub const fn decode(reader: &mut BitReader, bytes: &[u8], at: usize) -> Option<usize> {
+    if at + MAX_LEN > bytes.len() {
+        return None;
+    }
+    let peeked = reader.peek(MAX_LEN as u32) as i32;
+    let (mut first, mut index) = (0i32, 0usize);
+    let mut len = 1;
+    while len <= MAX_LEN {
+        let code = peeked >> (MAX_LEN - len);
+        let count = bytes[at + len - 1] as i32;
+        if code - first < count {
+            reader.skip(len as u32);
+            let symbol = at + MAX_LEN + index + (code - first) as usize;
+            return if symbol < bytes.len() { Some(bytes[symbol] as usize) } else { None };
+        }
+        index += count as usize;
+        first = (first + count) << 1;
+        len += 1;
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Codes from skewed and flat counts round trip through bits, never
+    /// exceed the longest length, and satisfy Kraft's inequality.
+    #[test]
+    fn codes_round_trip_and_stay_short() {
+        let skewed: Vec<u64> =
+            (0..162).map(|i| if i % 7 == 3 { 0 } else { 1u64 << (40 - i / 4).max(0) }).collect();
+        for counts in [skewed, vec![1; 40], vec![0, 0, 9, 0], vec![3, 1]] {
+            let code = Code::from_counts(&counts);
+            assert!(code.lengths().iter().all(|&l| usize::from(l) <= MAX_LEN));
+            let kraft: f64 =
+                code.lengths().iter().filter(|&&l| l > 0).map(|&l| 0.5f64.powi(i32::from(l))).sum();
+            assert!(kraft <= 1.0 + 1e-12, "{kraft}");
+            let stored = code.to_bytes();
+            assert_eq!(stored_len(&stored, 0), Some(stored.len()));
+            assert!(stored_is_valid(&stored, 0, counts.len()));
+            let used: Vec<usize> = (0..counts.len()).filter(|&s| counts[s] > 0).collect();
+            let mut w = BitWriter::default();
+            for &s in used.iter().chain(used.iter().rev()) {
+                code.write(&mut w, s);
+            }
+            let bytes = w.finish();
+            let mut r = BitReader::new(&bytes, 0, bytes.len());
+            for &s in used.iter().chain(used.iter().rev()) {
+                assert_eq!(decode(&mut r, &stored, 0), Some(s));
+            }
+            assert!(!r.overrun);
+        }
+    }
+
+    /// A stored code that lies about its symbols is refused; bits outside
+    /// an incomplete code decode to `None`.
+    #[test]
+    fn bad_codes_are_refused() {
+        let mut over = vec![0u8; MAX_LEN];
+        over[0] = 3; // three codes of one bit
+        over.extend([0, 1, 2]);
+        assert!(!stored_is_valid(&over, 0, 3));
+        let code = Code::from_counts(&[5, 0, 0, 0]).to_bytes();
+        assert!(stored_is_valid(&code, 0, 4) && !stored_is_valid(&code, 0, 0));
+        assert_eq!(stored_len(&code, 0), Some(MAX_LEN + 1));
+        assert_eq!(stored_len(&code[..MAX_LEN], 0), None);
+        let ones = [0xffu8; 4];
+        let mut r = BitReader::new(&ones, 0, 4);
+        assert_eq!(decode(&mut r, &code, 0), None, "the lone symbol's code is 0");
+    }
+}
