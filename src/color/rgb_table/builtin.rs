@@ -1,49 +1,49 @@
 //! The built-in spaces' tables, embedded: each its compact file and its
-//! slabs' cache, as `static`s, so that a program links a table only where
+//! tiles' cache, as `static`s, so that a program links a table only where
 //! it names it ([`RgbTable::SRGB`] and its siblings); and
 //! [`crate::rgb_table!`], which embeds a table of the caller's own the
 //! same way.
 
-use super::{RgbTable, SlabCache};
+use super::{RgbTable, TileCache};
 
 /// sRGB's compact table file, once in the program (a static array: a
 /// `const`, or a static reference to the bytes, could be copied into every
 /// place that uses it).
 static SRGB_FILE: [u8; include_bytes!("../../../data/rgb/srgb.rgbt").len()] =
     *include_bytes!("../../../data/rgb/srgb.rgbt");
-static SRGB_SLABS: SlabCache = SlabCache::new();
+static SRGB_TILES: TileCache = TileCache::new();
 
 #[cfg(feature = "wide-gamut")]
-static DISPLAY_P3_SLABS: SlabCache = SlabCache::new();
+static DISPLAY_P3_TILES: TileCache = TileCache::new();
 #[cfg(feature = "wide-gamut")]
-static REC2020_SLABS: SlabCache = SlabCache::new();
+static REC2020_TILES: TileCache = TileCache::new();
 #[cfg(feature = "wide-gamut")]
-static ACES2065_1_SLABS: SlabCache = SlabCache::new();
+static ACES2065_1_TILES: TileCache = TileCache::new();
 #[cfg(feature = "wide-gamut")]
-static ACESCG_SLABS: SlabCache = SlabCache::new();
+static ACESCG_TILES: TileCache = TileCache::new();
 
 impl RgbTable {
     /// Linear sRGB's table ([`RgbSpace::srgb`](crate::color::RgbSpace::srgb)'s), embedded at build time
     /// (`data/rgb/srgb.rgbt`, 1.5 MB).
-    pub const SRGB: &RgbTable = &RgbTable::embedded(&SRGB_FILE, &SRGB_SLABS);
+    pub const SRGB: &RgbTable = &RgbTable::embedded(&SRGB_FILE, &SRGB_TILES);
     /// Display P3's table ([`RgbSpace::display_p3`](crate::color::RgbSpace::display_p3)'s), from
     /// `speclab-wide-gamut` (feature `wide-gamut`, on by default).
     #[cfg(feature = "wide-gamut")]
-    pub const DISPLAY_P3: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::DISPLAY_P3, &DISPLAY_P3_SLABS);
+    pub const DISPLAY_P3: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::DISPLAY_P3, &DISPLAY_P3_TILES);
     /// Rec.2020's table ([`RgbSpace::rec2020`](crate::color::RgbSpace::rec2020)'s), as [`RgbTable::DISPLAY_P3`].
     #[cfg(feature = "wide-gamut")]
-    pub const REC2020: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::REC2020, &REC2020_SLABS);
+    pub const REC2020: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::REC2020, &REC2020_TILES);
     /// ACES2065-1's table ([`RgbSpace::aces2065_1`](crate::color::RgbSpace::aces2065_1)'s), as [`RgbTable::DISPLAY_P3`].
     #[cfg(feature = "wide-gamut")]
-    pub const ACES2065_1: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACES2065_1, &ACES2065_1_SLABS);
+    pub const ACES2065_1: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACES2065_1, &ACES2065_1_TILES);
     /// ACEScg's table ([`RgbSpace::acescg`](crate::color::RgbSpace::acescg)'s), as [`RgbTable::DISPLAY_P3`].
     #[cfg(feature = "wide-gamut")]
-    pub const ACESCG: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACESCG, &ACESCG_SLABS);
+    pub const ACESCG: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACESCG, &ACESCG_TILES);
 }
 
 /// A table file embedded in the program, as a `&'static RgbTable`: the
-/// file's bytes and its slabs' cache as `static`s, so that it is in the
-/// program once, its first lookup decodes one slab (about 4 ms) and its
+/// file's bytes and its tiles' cache as `static`s, so that it is in the
+/// program once, its first lookup decodes one tile (about 1 ms) and its
 /// colours can be `const`s. The path is `include_bytes!`'s; check the
 /// file in the build script (`speclab_tables::rgb_file::check_file`),
 /// since the table trusts its bytes (other bytes give wrong colours, never
@@ -60,8 +60,8 @@ impl RgbTable {
 macro_rules! rgb_table {
     ($path:expr) => {{
         static FILE: [u8; include_bytes!($path).len()] = *include_bytes!($path);
-        static SLABS: $crate::color::rgb_table::SlabCache = $crate::color::rgb_table::SlabCache::new();
-        &$crate::color::rgb_table::RgbTable::embedded(&FILE, &SLABS)
+        static TILES: $crate::color::rgb_table::TileCache = $crate::color::rgb_table::TileCache::new();
+        &$crate::color::rgb_table::RgbTable::embedded(&FILE, &TILES)
     }};
 }
 

@@ -1,7 +1,7 @@
 //! The table's lookup: where a colour falls (a `const fn`), and the
 //! eight coefficient triples around it interpolated, the same arithmetic
 //! at compile time (`RgbTable::const_albedo`, from the file's bytes) and
-//! at run time (from the decoded slabs), in `f32`, with no search and no
+//! at run time (from the decoded tiles), in `f32`, with no search and no
 //! allocation.
 //!
 //! The largest component `z` has its nodes at `g(k/(n − 1))`, `g` the
@@ -183,13 +183,18 @@ impl Grid {
         Some(Place { case, node: [k, yi as usize, xi as usize], d: [x - xi as f32, y - yi as f32, dz] })
     }
 
-    /// The slab of `place` and its first corner's index in it.
+    /// The tile `[tz, ty]` of `place` and its first corner's index in it
+    /// (tiles of 8 `z` and 8 `y` with a place more for each; one tile
+    /// below 8 nodes).
     #[inline(always)]
-    pub(crate) const fn in_slab(&self, place: Place) -> (usize, usize) {
+    pub(crate) const fn in_tile(&self, place: Place) -> ([usize; 2], usize) {
         let [k, y, x] = place.node;
-        // Slabs of 8 z; one slab below 8 nodes.
-        let (slab, z) = if self.n >= 8 { (k >> 3, k & 7) } else { (0, k) };
-        (slab, (z * self.n + y) * self.n + x)
+        let n = self.n;
+        if n >= 8 {
+            ([k >> 3, y >> 3], (((k & 7) * 9 + (y & 7)) * n) + x)
+        } else {
+            ([0, 0], (k * (n + 1) + y) * n + x)
+        }
     }
 
     /// `floor(v)` of `v ≥ 0`, at most `n − 2`.
@@ -228,17 +233,19 @@ impl Grid {
         lerp(low, high, dz)
     }
 
-    /// [`Grid::interpolate`] at run time, from the place's decoded slab:
-    /// the same operations in the same order on four lanes at once (each
-    /// corner's triple and the next float, which is dropped), so the same
-    /// bits, and faster: one bounds check per two corners.
+    /// [`Grid::interpolate`] at run time, from the place's decoded tile
+    /// ([`Grid::in_tile`]): the same operations in the same order on four
+    /// lanes at once (each corner's triple and the next float, which is
+    /// dropped), so the same bits, and faster: one bounds check per two
+    /// corners.
     #[inline(always)]
-    pub(crate) fn interpolate_lanes(&self, slab: &[f32], at: usize, place: Place) -> [f32; 3] {
+    pub(crate) fn interpolate_lanes(&self, tile: &[f32], at: usize, place: Place) -> [f32; 3] {
         let n = self.n;
+        let rows = if n >= 8 { 9 } else { n + 1 };
         let [dx, dy, dz] = place.d.map(f32x4::splat);
-        let (at, row, slice) = (3 * at, 3 * n, 3 * n * n);
+        let (at, row, slice) = (3 * at, 3 * n, 3 * rows * n);
         let pair = |at: usize| {
-            let f = slab.get(at..).and_then(<[f32]>::first_chunk::<7>).copied().unwrap_or([0.0; 7]);
+            let f = tile.get(at..).and_then(<[f32]>::first_chunk::<7>).copied().unwrap_or([0.0; 7]);
             (f32x4::from([f[0], f[1], f[2], f[3]]), f32x4::from([f[3], f[4], f[5], f[6]]))
         };
         let lerp = |a: f32x4, b: f32x4, t: f32x4| a + t * (b - a);

@@ -14,8 +14,8 @@
 //! embedded at build time, compact ([`RgbTable::SRGB`] and its siblings,
 //! `speclab_tables::rgb_file` version 2: each node rounded to what its
 //! spectrum needs, predicted from its neighbours and Huffman-coded;
-//! 1.5–2.3 MB per space). A lookup decodes the slab of 8 `z` it needs the
-//! first time (about 4 ms; the whole table about 0.1 s), and keeps it:
+//! 1.5–2.6 MB per space). A lookup decodes the tile of 9 × 9 × 64 nodes
+//! it needs the first time (about 1 ms), and keeps it (62 KB):
 //! nothing is fitted when a program starts, and a colour of a built-in
 //! space is a `const` ([`RgbTable::const_albedo`], which decodes the
 //! colour's corners at compile time, to the run-time lookup's bits). A
@@ -43,7 +43,7 @@ mod builtin;
 pub(crate) use builtin::BuiltInTable;
 mod fit;
 mod lookup;
-mod slabs;
+mod tiles;
 
 use std::fmt;
 use std::path::Path;
@@ -60,15 +60,15 @@ use crate::spectrum::SigmoidPolynomial;
 
 use crate::spectrum::sigmoid::constant;
 pub use lookup::node;
-pub use slabs::SlabCache;
 /// How a compact table rounds its nodes (`speclab_tables::rgb_file::quantize`).
 pub use speclab_tables::rgb_file::quantize::Quantizer;
+pub use tiles::TileCache;
 
 /// Nodes per axis of the built-in tables.
 pub const RESOLUTION: usize = 64;
 
 /// Sigmoid-polynomial coefficients on a grid of colours: a checked table
-/// file's bytes (version 2, compact, or version 1, `f32`) and its slabs,
+/// file's bytes (version 2, compact, or version 1, `f32`) and its tiles,
 /// decoded as colours need them.
 #[derive(Clone)]
 pub struct RgbTable {
@@ -77,22 +77,22 @@ pub struct RgbTable {
     grid: lookup::Grid,
 }
 
-/// Where the bytes and their slabs live: the program's static data, or
+/// Where the bytes and their tiles live: the program's static data, or
 /// shared on the heap.
 #[derive(Clone)]
 enum Source {
-    Static { bytes: &'static [u8], slabs: &'static SlabCache },
-    Shared(Arc<(Box<[u8]>, SlabCache)>),
+    Static { bytes: &'static [u8], tiles: &'static TileCache },
+    Shared(Arc<(Box<[u8]>, TileCache)>),
 }
 
 impl RgbTable {
     /// The table of the table file `bytes`, embedded in the program with
-    /// its slabs' cache: what [`crate::rgb_table!`] and the built-in tables
+    /// its tiles' cache: what [`crate::rgb_table!`] and the built-in tables
     /// use. The bytes must be a file `speclab_tables::rgb_file::parse`
     /// accepts (a build script checks it with `check_file`): other bytes
     /// give wrong colours, never a panic.
     #[must_use]
-    pub const fn embedded(bytes: &'static [u8], slabs: &'static SlabCache) -> RgbTable {
+    pub const fn embedded(bytes: &'static [u8], tiles: &'static TileCache) -> RgbTable {
         let n = compact::word(bytes, 12) as usize;
         let n = if n < 2 {
             2
@@ -101,12 +101,12 @@ impl RgbTable {
         } else {
             n
         };
-        RgbTable { source: Source::Static { bytes, slabs }, grid: lookup::Grid::new(n) }
+        RgbTable { source: Source::Static { bytes, tiles }, grid: lookup::Grid::new(n) }
     }
 
     /// The table of a checked file's `bytes` on the heap.
     fn shared(bytes: Box<[u8]>, n: usize) -> RgbTable {
-        RgbTable { source: Source::Shared(Arc::new((bytes, SlabCache::new()))), grid: lookup::Grid::new(n) }
+        RgbTable { source: Source::Shared(Arc::new((bytes, TileCache::new()))), grid: lookup::Grid::new(n) }
     }
 
     /// A table fitted by `fit` for the space named `name`, `n` nodes per
@@ -180,15 +180,19 @@ impl RgbTable {
     #[must_use]
     pub fn coefficients(&self) -> Vec<[f32; 3]> {
         let n = self.grid.n;
-        let count = slabs::count(n);
-        let mut out = Vec::with_capacity(3 * n * n * n);
-        for case in 0..3 {
-            for s in 0..count {
-                let (z0, z1) = slabs::z_range(n, s);
-                // The last z of a slab is the next one's first.
-                let own = if s + 1 < count { z1 - z0 } else { z1 - z0 + 1 };
-                let slab = self.slab(case, s);
-                out.extend(slab[..3 * own * n * n].chunks_exact(3).map(|c| [c[0], c[1], c[2]]));
+        let (b, count) = (tiles::block(n), tiles::count(n));
+        let mut out = vec![[0.0; 3]; 3 * n * n * n];
+        for (case, tz, ty) in
+            (0..3).flat_map(|c| (0..count).flat_map(move |z| (0..count).map(move |y| (c, z, y))))
+        {
+            let tile = self.tile(case, [tz, ty]);
+            for (z, y) in
+                (tz * b..(tz * b + b).min(n)).flat_map(|z| (ty * b..(ty * b + b).min(n)).map(move |y| (z, y)))
+            {
+                let from = 3 * (((z - tz * b) * (b + 1) + y - ty * b) * n);
+                let row = tile[from..from + 3 * n].chunks_exact(3).map(|c| [c[0], c[1], c[2]]);
+                let to = ((case * n + z) * n + y) * n;
+                out[to..to + n].iter_mut().zip(row).for_each(|(o, c)| *o = c);
             }
         }
         out
@@ -203,26 +207,25 @@ impl RgbTable {
         }
     }
 
-    /// Slab `s` of case `case` (decoded now if it is not yet).
+    /// Tile `[tz, ty]` of case `case` (decoded now if it is not yet).
     #[inline(always)]
-    fn slab(&self, case: usize, s: usize) -> &[f32] {
+    fn tile(&self, case: usize, tile: [usize; 2]) -> &[f32] {
         match &self.source {
-            Source::Static { bytes, slabs } => slabs.get(bytes, self.grid.n, case, s),
-            Source::Shared(shared) => shared.1.get(&shared.0, self.grid.n, case, s),
+            Source::Static { bytes, tiles } => tiles.get(bytes, self.grid.n, case, tile),
+            Source::Shared(shared) => shared.1.get(&shared.0, self.grid.n, case, tile),
         }
     }
 
-    /// How many of the table's slabs are decoded, of how many (three cases
-    /// of `⌈(n − 1)/8⌉`): what the table costs in memory now, 0.44 MB a slab.
+    /// How many of the table's tiles are decoded, of how many (three
+    /// cases of `⌈(n − 1)/8⌉²`): what the table costs in memory now,
+    /// 62 KB a tile at 64 nodes per axis.
     #[must_use]
-    pub fn decoded_slabs(&self) -> (usize, usize) {
+    pub fn decoded_tiles(&self) -> (usize, usize) {
         let cache = match &self.source {
-            Source::Static { slabs, .. } => *slabs,
+            Source::Static { tiles, .. } => *tiles,
             Source::Shared(shared) => &shared.1,
         };
-        let count = slabs::count(self.grid.n);
-        let decoded = (0..3).flat_map(|c| (0..count).map(move |s| (c, s)));
-        (decoded.filter(|&(c, s)| cache.decoded(c, s).is_some()).count(), 3 * count)
+        (cache.decoded(), 3 * tiles::count(self.grid.n).pow(2))
     }
 
     /// Nodes per axis.
@@ -304,8 +307,8 @@ impl RgbTable {
         }
         // Components below f32's smallest normal number are black.
         let Some(place) = self.grid.locate(rgb.map(|v| v as f32)) else { return SigmoidPolynomial::BLACK };
-        let (s, at) = self.grid.in_slab(place);
-        let c = self.grid.interpolate_lanes(self.slab(place.case, s), at, place);
+        let (tile, at) = self.grid.in_tile(place);
+        let c = self.grid.interpolate_lanes(self.tile(place.case, tile), at, place);
         SigmoidPolynomial::new(c.map(f64::from))
     }
 }

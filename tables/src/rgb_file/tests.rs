@@ -1,4 +1,3 @@
-
 use super::*;
 use proptest::prelude::*;
 
@@ -32,9 +31,9 @@ proptest! {
         finish(&mut bytes);
         // Checked or not (an embedded table trusts its build script).
         let _ = parse(&bytes, "x");
-        let layout = compact::Layout::read(&bytes);
+        let (layout, decoder) = (compact::Layout::read(&bytes), compact::Decoder::new(&bytes));
         for case in 0..3 {
-            let _ = compact::decode_slab(&bytes, &layout, case, 0);
+            let _ = decoder.tile(&bytes, case, 0, 0);
             let _ = compact::corners(&bytes, &layout, case, 1, 1, 1);
         }
         let cut = cut % bytes.len();
@@ -51,9 +50,9 @@ proptest! {
         bytes.resize(bytes.len().max(200), 7);
         bytes[8..12].copy_from_slice(&2u32.to_le_bytes());
         bytes[12..16].copy_from_slice(&n.to_le_bytes());
-        let layout = compact::Layout::read(&bytes);
+        let (layout, decoder) = (compact::Layout::read(&bytes), compact::Decoder::new(&bytes));
         for case in 0..3 {
-            let _ = compact::decode_slab(&bytes, &layout, case, 0);
+            let _ = decoder.tile(&bytes, case, 0, 0);
             let _ = compact::corners(&bytes, &layout, case, 0, 0, 0);
         }
     }

@@ -45,6 +45,14 @@ impl BlockState {
         BlockState::padded(i / (dx * dy), i / dx % dy, i % dx)
     }
 
+    /// Node `(z, y, x)`'s form and integers.
+    #[inline(always)]
+    #[must_use]
+    pub const fn node_at(&self, z: usize, y: usize, x: usize) -> Node {
+        let p = BlockState::padded(z, y, x);
+        Node { vertex: self.vertex[p], k: self.k[p] }
+    }
+
     /// Node `i`'s form and integers.
     #[must_use]
     pub const fn node(&self, i: usize) -> Node {

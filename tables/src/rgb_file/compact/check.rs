@@ -2,7 +2,7 @@
 //! every block decoded.
 
 use super::{
-    ALPHABET, BLOCK_MAX, BODY_START, BlockState, CONTEXTS, Layout, TABLES, coefficients, decode_block, word,
+    ALPHABET, BLOCK_MAX, BODY_START, BlockState, CONTEXTS, Decoder, Layout, TABLES, coefficients, word,
 };
 use crate::rgb_file::FileErrorKind;
 use crate::rgb_file::huffman;
@@ -12,13 +12,14 @@ use crate::rgb_file::huffman;
 /// bytes into finite coefficients.
 pub(crate) fn check(bytes: &[u8]) -> Result<(), FileErrorKind> {
     let layout = check_layout(bytes)?;
+    let decoder = Decoder::new(bytes);
     let mut state = BlockState::new([0; 3]);
     for id in 0..layout.blocks() {
         let d = layout.dims(id);
         let nodes = d[0] * d[1] * d[2];
         let (start, _) = layout.block_bytes(bytes, id);
         // Every bit a code, and no byte left over.
-        if decode_block(bytes, &layout, id, nodes, &mut state).is_none_or(|left| left >= 8) {
+        if decoder.block(bytes, id, nodes, &mut state).is_none_or(|left| left >= 8) {
             return Err(FileErrorKind::Block { block: id });
         }
         if (0..nodes).any(|i| coefficients(&layout, &state, i).iter().any(|v| !v.is_finite())) {

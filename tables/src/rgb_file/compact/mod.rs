@@ -4,7 +4,7 @@
 //!
 //! The nodes go in blocks of `B³` (8³ in the built-in tables), each coded
 //! on its own, so that a lookup at compile time decodes the few blocks
-//! around its colour and a program decodes a slab of blocks when a colour
+//! around its colour and a program decodes a tile of blocks when a colour
 //! first needs it. Within a block, in `z, y, x` order:
 //!
 //! - the node's three integers are predicted by Lorenzo's rule, the sum of
@@ -28,14 +28,13 @@
 //! | end − 8 | 8 | FNV-1a of every byte before it |
 //!
 //! ```
-//! use speclab_tables::rgb_file::{Header, compact::{self, Layout}, quantize::Quantizer};
+//! use speclab_tables::rgb_file::{Header, compact, quantize::Quantizer};
 //! let header = Header { version: 2, resolution: 4, matrix: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]], name: "tiny".into() };
 //! let c: Vec<[f32; 3]> = (0..3 * 64).map(|i| [-(i as f32), 2.0 * i as f32, -0.5]).collect();
 //! let bytes = compact::encode(&header, Quantizer::DEFAULT, 4, &c);
-//! let layout = Layout::read(&bytes);
-//! let slab = compact::decode_slab(&bytes, &layout, 2, 0); // case 2, z from 0 to 3
-//! assert_eq!(slab.len(), 4 * 16);
-//! assert_eq!(slab[5], Quantizer::DEFAULT.coefficients(Quantizer::DEFAULT.node(c[2 * 64 + 5])));
+//! let tile = compact::Decoder::new(&bytes).tile(&bytes, 2, 0, 0); // case 2: z, y and x from 0 to 3
+//! assert_eq!(tile.len(), 5 * 5 * 4); // 4 + 1 places for z and y
+//! assert_eq!(tile[5 * 4 + 1], Quantizer::DEFAULT.coefficients(Quantizer::DEFAULT.node(c[2 * 64 + 16 + 1])));
 //! ```
 
 mod block;
@@ -45,7 +44,7 @@ mod encode;
 
 pub use block::BlockState;
 pub(crate) use check::check;
-pub use decode::{coefficients, corners, decode_block, decode_nodes, decode_slab};
+pub use decode::{Decoder, coefficients, corners, decode_block, decode_nodes};
 pub use encode::{encode, encode_nodes};
 
 use crate::rgb_file::HEADER_LEN;

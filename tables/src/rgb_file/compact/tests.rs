@@ -54,18 +54,31 @@ fn decoding_gives_the_rounded_nodes() {
         let nodes: Vec<Node> = c.iter().map(|&c| q.node(c)).collect();
         assert!(nodes.iter().any(|n| n.vertex) && nodes.iter().any(|n| !n.vertex));
         assert_eq!(decode_nodes(&bytes), nodes, "n = {n}");
-        let layout = Layout::read(&bytes);
+        let (layout, decoder) = (Layout::read(&bytes), Decoder::new(&bytes));
         let b = n.min(BLOCK_MAX);
+        // The run-time decoder and the `const` one, block by block.
+        let (mut fast, mut slow) = (BlockState::new([0; 3]), BlockState::new([0; 3]));
+        for id in 0..layout.blocks() {
+            let nodes = layout.dims(id).iter().product();
+            let left = decoder.block(&bytes, id, nodes, &mut fast);
+            assert_eq!(left, decode_block(&bytes, &layout, id, nodes, &mut slow), "n {n} block {id}");
+            assert!((0..nodes).all(|i| fast.node(i) == slow.node(i)), "n {n} block {id}");
+        }
         for case in 0..3 {
-            for s in 0..(n - 1).div_ceil(b) {
-                let slab = decode_slab(&bytes, &layout, case, s);
-                let z0 = s * b;
-                for (i, got) in slab.iter().enumerate() {
-                    assert_eq!(
-                        *got,
-                        q.coefficients(nodes[case * n * n * n + z0 * n * n + i]),
-                        "n {n} slab {s} node {i}"
-                    );
+            for (tz, ty) in
+                (0..(n - 1).div_ceil(b)).flat_map(|tz| (0..(n - 1).div_ceil(b)).map(move |ty| (tz, ty)))
+            {
+                let tile = decoder.tile(&bytes, case, tz, ty);
+                assert_eq!(tile.len(), (b + 1) * (b + 1) * n);
+                for (i, got) in tile.iter().enumerate() {
+                    let (z, y, x) = (tz * b + i / ((b + 1) * n), ty * b + i / n % (b + 1), i % n);
+                    let inside = z <= (tz * b + b).min(n - 1) && y <= (ty * b + b).min(n - 1);
+                    let want = if inside {
+                        q.coefficients(nodes[((case * n + z) * n + y) * n + x])
+                    } else {
+                        [0.0; 3]
+                    };
+                    assert_eq!(*got, want, "n {n} tile {tz} {ty} node {z} {y} {x}");
                 }
             }
             let last = n - 2;
