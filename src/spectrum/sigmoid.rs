@@ -80,7 +80,14 @@ impl SigmoidPolynomial {
     /// `eval_many_nearest_f32`).
     #[inline(always)]
     pub fn eval_many_f32(&self, scale: f32, lambda: &[f32], values: &mut [f32]) {
-        let [c0, c1, c2] = self.c.map(|v| v as f32);
+        SigmoidPolynomial::eval_many_f32_coefficients(self.c.map(|v| v as f32), scale, lambda, values);
+    }
+
+    /// [`SigmoidPolynomial::eval_many_f32`] of the coefficients `c`, already
+    /// in `f32`.
+    #[inline(always)]
+    pub fn eval_many_f32_coefficients(c: [f32; 3], scale: f32, lambda: &[f32], values: &mut [f32]) {
+        let [c0, c1, c2] = c;
         for (v, &l) in values.iter_mut().zip(lambda) {
             let t = (l - LAMBDA_MIN as f32) * (1.0 / LAMBDA_WIDTH as f32);
             *v = scale * sigmoid_f32(c2 + t * (c1 + t * c0));

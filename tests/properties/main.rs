@@ -16,6 +16,7 @@ mod prepared;
 mod regular;
 mod rgb_table;
 mod spectra;
+mod texel;
 mod upsample;
 mod visible;
 

@@ -71,9 +71,15 @@ fn main() {
             speclab::color::LinearRgb::new(v, (v * 3.7).fract(), (v * 7.3).fract())
         })
         .collect();
+    // And 4,096 random ones: a texture whose lookups leave the caches.
+    let mut rng = XorShift32(0x2545_F491);
+    let random_texels: Vec<speclab::color::LinearRgb> = (0..4096)
+        .map(|_| speclab::color::LinearRgb::from([0; 3].map(|_| f64::from(rng.next() >> 8) / 16_777_216.0)))
+        .collect();
     let srgb = speclab::color::RgbSpace::srgb();
     let converted: Vec<speclab::color::RgbAlbedo> =
         texels.iter().map(|&rgb| srgb.albedo(rgb).expect("texels are albedos")).collect();
+    let small: Vec<speclab::color::RgbTexel> = converted.iter().map(|&a| a.into()).collect();
     let (lc, sc) =
         (RegularSpectrum::<16, Center>::center(light), RegularSpectrum::<16, Center>::center(surface));
     let (lb, sb) = (
@@ -114,12 +120,12 @@ fn main() {
         Row { what: "f64 hero K = 4 over dense tables, per wavelength", target: "", unit: Unit::Ratio },
         Row {
             what: "f32 hero K = 4, the surface an RGB albedo already looked up, per wavelength",
-            target: "≤ 1× dense f32",
+            target: "",
             unit: Unit::Dense,
         },
         Row {
             what: "the same, the albedo in the enum of kinds, per wavelength",
-            target: "≤ 1× dense f32",
+            target: "",
             unit: Unit::Dense,
         },
         Row {
@@ -129,11 +135,21 @@ fn main() {
         },
         Row {
             what: "f32 hero K = 4, a texel: space.albedo(rgb) at each hit, then the sample, per wavelength",
-            target: "≤ 2.5× dense f32",
+            target: "",
+            unit: Unit::Dense,
+        },
+        Row {
+            what: "the same, 4,096 random texels (the table leaves the caches), per wavelength",
+            target: "",
             unit: Unit::Dense,
         },
         Row {
             what: "the same texture converted once (an RgbAlbedo per texel), read and sampled, per wavelength",
+            target: "",
+            unit: Unit::Dense,
+        },
+        Row {
+            what: "the same, each texel in 12 bytes (an RgbTexel, decoded at the hit), per wavelength",
             target: "",
             unit: Unit::Dense,
         },
@@ -187,7 +203,8 @@ fn main() {
         let (mut r1, mut r2, mut r3, mut r4, mut r5) =
             (seed, seed, Pcg32::new(7), seed, XorShift32(0x1234_5678));
         let (mut r6, mut r7, mut r8, mut r9) = (seed, seed, seed, seed);
-        let (mut r10, mut r11, mut r12, mut r13, mut r14) = (seed, seed, seed, seed, seed);
+        let (mut r10, mut r11, mut r12, mut r13, mut r14, mut r15, mut r16) =
+            (seed, seed, seed, seed, seed, seed, seed);
         let (mut out, mut out2) = (vec![Xyz::ZERO; SPECTRA], vec![Xyz::ZERO; SPECTRA]);
         let mut cases = [
             Case::new("hand-tuned", || (black_box(kernels::hand_tuned_hero(&tables, N, &mut r1)), 4 * N).1),
@@ -216,8 +233,14 @@ fn main() {
             Case::new("texel f32", || {
                 (black_box(kernels::speclab_texel_hero(srgb, &dl, &texels, N, &mut r13)), 4 * N).1
             }),
+            Case::new("texel f32 random", || {
+                (black_box(kernels::speclab_texel_hero(srgb, &dl, &random_texels, N, &mut r15)), 4 * N).1
+            }),
             Case::new("texel f32 converted", || {
                 (black_box(kernels::speclab_converted_texel_hero(&dl, &converted, N, &mut r14)), 4 * N).1
+            }),
+            Case::new("texel f32 12 bytes", || {
+                (black_box(kernels::speclab_texel_12_hero(&dl, &small, N, &mut r16)), 4 * N).1
             }),
             Case::new("exact f64", || {
                 (black_box(kernels::speclab_hero::<4, f64>(light, surface, N, &mut r2)), 4 * N).1

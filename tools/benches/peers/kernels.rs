@@ -19,7 +19,7 @@
 //! speclab kernel uses the same xorshift32 as the hand-tuned one.
 
 use speclab::SampledSpectrum;
-use speclab::color::{LinearRgb, RgbAlbedo, RgbSpace};
+use speclab::color::{LinearRgb, RgbAlbedo, RgbSpace, RgbTexel};
 use speclab::spectrum::observer::xyz_bar;
 use speclab::spectrum::{DenseSpectrum, Float, Wavelengths};
 use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum, TabulatedSpectrum, Xyz};
@@ -161,14 +161,26 @@ pub fn speclab_converted_texel_hero(
     texel_loop(light, n, rng, |i| texels[i % texels.len()])
 }
 
+/// [`speclab_converted_texel_hero`] with each texel in 12 bytes (an
+/// `RgbTexel`, decoded at each hit).
+#[inline(never)]
+pub fn speclab_texel_12_hero(
+    light: &DenseSpectrum,
+    texels: &[RgbTexel],
+    n: usize,
+    rng: &mut XorShift32,
+) -> Xyz {
+    texel_loop(light, n, rng, |i| texels[i % texels.len()])
+}
+
 /// The texel kernels' loop: `n` f32 hero samples of the light times the
 /// albedo of hit `i`.
 #[inline(always)]
-fn texel_loop(
+fn texel_loop<S: Spectrum>(
     light: &DenseSpectrum,
     n: usize,
     rng: &mut XorShift32,
-    albedo: impl Fn(usize) -> RgbAlbedo,
+    albedo: impl Fn(usize) -> S,
 ) -> Xyz {
     let mut sum = Xyz::ZERO;
     for i in 0..n {

@@ -156,3 +156,20 @@ fn wrong_parts_are_named() {
     let e = parse(&good[..good.len() - 20], "cut.rgbt").unwrap_err();
     assert!(e.to_string().starts_with("cut.rgbt: expected"), "{e}");
 }
+
+/// A block whose bits are no codes: the structure passes (the checksum
+/// stands for the bits, as a build script trusts), the whole check names
+/// the block.
+#[test]
+fn structure_alone_does_not_decode_blocks() {
+    let n = 9;
+    let good = encode(&header(n), Quantizer::DEFAULT, n, &table(n));
+    let layout = Layout::read(&good);
+    let (start, end) = layout.block_bytes(&good, 2);
+    let mut bad = good[..good.len() - 8].to_vec();
+    bad[start..end].fill(0xff);
+    finish(&mut bad);
+    assert!(crate::rgb_file::parse_structure(&bad, "t").is_ok());
+    assert_eq!(parse(&bad, "t").unwrap_err().kind, FileErrorKind::Block { block: 2 });
+    assert!(crate::rgb_file::parse_structure(&good[1..], "t").is_err());
+}
