@@ -40,6 +40,8 @@
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
+use wide::f64x4;
+
 use crate::color::lab::{lab, lab_jacobian};
 use crate::color::matrix::{Matrix, inverse, mul};
 use crate::color::rgb::LinearRgb;
@@ -63,8 +65,10 @@ pub(crate) struct Fit {
     pub(crate) white_y: f64,
     pub(crate) to_rgb: Matrix,
     to_xyz: Matrix,
-    /// `(t, weights)`: the normalised wavelength and `w·L·c̄/Y_white`.
-    nodes: Vec<(f64, [f64; 3])>,
+    /// Four nodes at a time, `[t, w_x, w_y, w_z]`: the normalised
+    /// wavelength and `w·L·c̄/Y_white` (the last group filled with weights
+    /// of 0).
+    nodes: Vec<[f64x4; 4]>,
 }
 
 impl std::fmt::Debug for Fit {
@@ -97,6 +101,15 @@ impl Fit {
                 let weight = wt * illuminant.eval(lambda) / raw.y;
                 ((lambda - LAMBDA_MIN) / LAMBDA_WIDTH, observer::xyz_bar(lambda).map(|c| c * weight))
             })
+            .collect::<Vec<_>>()
+            .chunks(4)
+            .map(|group| {
+                // A missing node: t = 0, weights 0.
+                let at = |f: fn(&(f64, [f64; 3])) -> f64| {
+                    f64x4::from(std::array::from_fn(|i| group.get(i).map_or(0.0, f)))
+                };
+                [at(|n| n.0), at(|n| n.1[0]), at(|n| n.1[1]), at(|n| n.1[2])]
+            })
             .collect();
         Fit { illuminant, white, white_y: raw.y, to_rgb, to_xyz: inverse(&to_rgb), nodes }
     }
@@ -118,21 +131,27 @@ impl Fit {
 
     /// XYZ of the sigmoid polynomial `c` by the fit's nodes, and its
     /// derivative by each coefficient (`[d/dc₀, d/dc₁, d/dc₂]` per channel).
+    /// Four nodes at a time in `f64x4` lanes (the fit's inner loop).
     fn xyz_and_jacobian(&self, c: [f64; 3]) -> (Xyz, [[f64; 3]; 3]) {
-        let (mut xyz, mut jac) = ([0.0; 3], [[0.0; 3]; 3]);
-        for &(t, w) in &self.nodes {
-            let x = c[2] + t * (c[1] + t * c[0]);
-            let r = 1.0 / (1.0 + x * x).sqrt();
-            let (s, ds) = (0.5 + 0.5 * x * r, 0.5 * r * r * r);
+        let [c0, c1, c2] = c.map(f64x4::splat);
+        let (half, one) = (f64x4::splat(0.5), f64x4::splat(1.0));
+        // X, Y, Z, then each channel's derivatives by c₀, c₁, c₂.
+        let mut sums = [f64x4::ZERO; 12];
+        for &[t, wx, wy, wz] in &self.nodes {
+            let x = c2 + t * (c1 + t * c0);
+            let r = one / (one + x * x).sqrt();
+            let (s, ds) = (half + half * x * r, half * r * r * r);
             let basis = [t * t * ds, t * ds, ds];
-            for ch in 0..3 {
-                xyz[ch] += w[ch] * s;
-                for (j, b) in jac[ch].iter_mut().zip(basis) {
-                    *j += w[ch] * b;
+            for (ch, w) in [wx, wy, wz].into_iter().enumerate() {
+                sums[ch] += w * s;
+                for (k, b) in basis.into_iter().enumerate() {
+                    sums[3 + 3 * ch + k] += w * b;
                 }
             }
         }
-        (Xyz::from(xyz), jac)
+        let sum = |v: f64x4| v.to_array().iter().sum::<f64>();
+        let xyz = Xyz::new(sum(sums[0]), sum(sums[1]), sum(sums[2]));
+        (xyz, std::array::from_fn(|ch| std::array::from_fn(|k| sum(sums[3 + 3 * ch + k]))))
     }
 
     /// The coefficients whose colour is `target` (XYZ, white `Y = 1`),
