@@ -157,4 +157,16 @@ mod tests {
         assert_eq!(short.bits(9), 0x100);
         assert!(short.overrun);
     }
+
+    /// A writer with bits in it is not empty, and `bit` reads zeros as
+    /// well as ones.
+    #[test]
+    fn single_bits_and_emptiness() {
+        let mut w = BitWriter::default();
+        w.put(0b0110, 4);
+        assert!(!w.is_empty());
+        let bytes = w.finish();
+        let mut r = BitReader::new(&bytes, 0, bytes.len());
+        assert_eq!([r.bit(), r.bit(), r.bit(), r.bit()], [0, 1, 1, 0]);
+    }
 }

@@ -41,8 +41,9 @@ impl Code {
             if lengths.iter().all(|&l| usize::from(l) <= MAX_LEN) {
                 return Code::canonical(lengths);
             }
-            for c in counts.iter_mut().filter(|c| **c > 0) {
-                *c = (*c).div_ceil(2);
+            // Rounded up: a used symbol stays used, an unused one unused.
+            for c in &mut counts {
+                *c = c.div_ceil(2);
             }
         }
     }
@@ -83,13 +84,14 @@ impl Code {
     /// follows the last of the length before, shifted; within a length,
     /// codes rise with the symbol.
     fn canonical(lengths: Vec<u8>) -> Code {
-        let mut next = [0u32; MAX_LEN + 2];
+        let mut next = [0u32; MAX_LEN + 1];
         let mut count = [0u32; MAX_LEN + 1];
         for &l in &lengths {
             count[usize::from(l)] += 1;
         }
         count[0] = 0;
-        for l in 1..=MAX_LEN {
+        // The first code of each length from 2 on (length 1's is 0).
+        for l in 1..MAX_LEN {
             next[l + 1] = (next[l] + count[l]) << 1;
         }
         let codes = lengths
@@ -245,13 +247,17 @@ mod tests {
         for counts in [skewed, vec![1; 40], vec![0, 0, 9, 0], vec![3, 1]] {
             let code = Code::from_counts(&counts);
             assert!(code.lengths().iter().all(|&l| usize::from(l) <= MAX_LEN));
+            // A code for each used symbol, none for the others.
+            assert_eq!(code.lengths().len(), counts.len());
+            assert!(counts.iter().zip(code.lengths()).all(|(&c, &l)| (c > 0) == (l > 0)), "{code:?}");
+            let used: Vec<usize> = (0..counts.len()).filter(|&s| counts[s] > 0).collect();
+            // Huffman's codes are complete: Kraft's sum is 1 (½ for a lone symbol).
             let kraft: f64 =
                 code.lengths().iter().filter(|&&l| l > 0).map(|&l| 0.5f64.powi(i32::from(l))).sum();
-            assert!(kraft <= 1.0 + 1e-12, "{kraft}");
+            assert_eq!(kraft, if used.len() == 1 { 0.5 } else { 1.0 }, "{code:?}");
             let stored = code.to_bytes();
             assert_eq!(stored_len(&stored, 0), Some(stored.len()));
             assert!(stored_is_valid(&stored, 0, counts.len()));
-            let used: Vec<usize> = (0..counts.len()).filter(|&s| counts[s] > 0).collect();
             let mut w = BitWriter::default();
             for &s in used.iter().chain(used.iter().rev()) {
                 code.write(&mut w, s);
@@ -285,5 +291,28 @@ mod tests {
         let ones = [0xffu8; 4];
         let mut r = BitReader::new(&ones, 0, 4);
         assert_eq!(decode(&mut r, &code, 0), None, "the lone symbol's code is 0");
+    }
+
+    /// Counts in powers of two get lengths of `log2(total / count)`.
+    #[test]
+    fn dyadic_counts_get_their_entropy_lengths() {
+        assert_eq!(Code::from_counts(&[8, 4, 2, 1, 1]).lengths(), [1, 2, 3, 4, 4]);
+        assert_eq!(Code::from_counts(&[0, 2, 0, 1, 1]).lengths(), [0, 1, 0, 2, 2]);
+    }
+
+    /// A code of no symbols (an unused context) is its counts alone, even
+    /// as the last bytes; a stored code cut short, in its counts or in
+    /// its symbols, decodes to `None` rather than reading past the bytes.
+    #[test]
+    fn empty_and_cut_codes() {
+        let empty = Code::from_counts(&[0; 4]).to_bytes();
+        assert_eq!(empty, [0; MAX_LEN]);
+        assert_eq!(stored_len(&empty, 0), Some(MAX_LEN));
+        let zeros = [0u8; 4];
+        let lone = Code::from_counts(&[0, 0, 7]).to_bytes();
+        assert_eq!(decode(&mut BitReader::new(&zeros, 0, 4), &lone, 0), Some(2));
+        for cut in [&lone[..MAX_LEN], &lone[..5], &lone[..0]] {
+            assert_eq!(decode(&mut BitReader::new(&zeros, 0, 4), cut, 0), None, "{} bytes", cut.len());
+        }
     }
 }

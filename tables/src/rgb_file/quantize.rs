@@ -215,8 +215,42 @@ mod tests {
             "rounds up into the first octave"
         );
         assert_eq!((f.encode(f64::NAN), f.decode(0)), (0, 0.0));
+        assert!(f.decode(0).is_sign_positive(), "0 is +0.0, as a fitted table's zero");
         assert_eq!(f.decode(i64::MAX), f64::INFINITY);
         assert_eq!(f.decode(-(3 << 12)), -2f64.powi(-6));
+    }
+
+    /// `pow2` is exact over f64's normal exponents, 0 below, infinite above.
+    #[test]
+    fn pow2_covers_the_normal_exponents() {
+        for p in -1022..=1023 {
+            assert_eq!(pow2(p), 2f64.powi(p), "{p}");
+        }
+        assert_eq!(pow2(-1022), f64::MIN_POSITIVE);
+        for p in [-1023, -1024, -5000, i32::MIN] {
+            assert_eq!(pow2(p).to_bits(), 0, "{p}");
+        }
+        for p in [1024, 5000, i32::MAX] {
+            assert_eq!(pow2(p), f64::INFINITY, "{p}");
+        }
+    }
+
+    /// The value form stores `x` at 360, 595 and 830 nm, `t = (λ − 380)/350`,
+    /// each within half a step, for a curve as well as a line.
+    #[test]
+    fn values_are_taken_at_360_595_and_830_nm() {
+        let q = Quantizer::DEFAULT;
+        for c in [[0.0, 30.0, -12.0], [2.0, 30.0, -12.0], [-0.5, -3.0, 4.0]] {
+            let node = q.node(c);
+            assert!(!node.vertex, "{c:?}");
+            let [a, b, c0] = c.map(f64::from);
+            for (j, nm) in [360.0, 595.0, 830.0].into_iter().enumerate() {
+                let t = (nm - 380.0) / 350.0;
+                let x = a * t * t + b * t + c0;
+                let got = q.float.decode(node.k[j]);
+                assert!((got - x).abs() <= x.abs() * 2f64.powi(-13), "{c:?} at {nm} nm: {got}, {x}");
+            }
+        }
     }
 
     /// The Lagrange weights reproduce a quadratic's coefficients.

@@ -106,6 +106,18 @@ fn every_field_is_checked() {
     }
 }
 
+/// A file of exactly a header and a checksum is long enough for the
+/// header's own checks: what is wrong is its version, or its length.
+#[test]
+fn a_header_and_a_checksum_reach_the_header_checks() {
+    let bytes = tiny()[..HEADER_LEN + CHECKSUM_LEN].to_vec();
+    let kind = |bytes: &[u8]| parse(bytes, "t").unwrap_err().kind;
+    assert_eq!(kind(&bytes), FileErrorKind::Length { expected: tiny().len(), found: bytes.len() });
+    let mut version_3 = bytes.clone();
+    version_3[8] = 3;
+    assert_eq!(kind(&version_3), FileErrorKind::Version(3));
+}
+
 #[test]
 fn files_are_read_and_named() {
     let path = std::env::temp_dir().join(format!("speclab-rgb-file-{}.rgbt", std::process::id()));

@@ -173,3 +173,65 @@ fn structure_alone_does_not_decode_blocks() {
     assert_eq!(parse(&bad, "t").unwrap_err().kind, FileErrorKind::Block { block: 2 });
     assert!(crate::rgb_file::parse_structure(&good[1..], "t").is_err());
 }
+
+/// The longest differences, [`MAX_BITS`] bits of either sign, the form's
+/// flip riding on the first component's: the top symbols of each alphabet,
+/// which the file's codes hold and its check accepts.
+#[test]
+fn the_longest_differences_fit_the_alphabets() {
+    let n = 2;
+    let big = (1i64 << MAX_BITS) - 1;
+    let zero = Node { vertex: true, k: [0; 3] };
+    let mut nodes = vec![zero; 3 * n * n * n];
+    // Down by `big` from the prediction 0, then back up by it.
+    nodes[0] = Node { vertex: false, k: [-big; 3] };
+    let bytes = encode_nodes(&header(n), Quantizer::DEFAULT, n, &nodes);
+    assert_eq!(crate::rgb_file::parse_structure(&bytes, "t").map(|h| h.version), Ok(2));
+    assert_eq!(decode_nodes(&bytes), nodes);
+    // Only `v` (with `a` = 0 the coefficients stay finite): the whole check.
+    nodes[0] = Node { vertex: true, k: [0, -big, 0] };
+    let bytes = encode_nodes(&header(n), Quantizer::DEFAULT, n, &nodes);
+    assert_eq!(parse(&bytes, "t").map(|h| h.version), Ok(2));
+    assert_eq!(decode_nodes(&bytes), nodes);
+}
+
+/// `word` reads a word that ends the bytes, and 0 for one past them.
+#[test]
+fn words_up_to_the_last_byte() {
+    assert_eq!(word(&[1, 2, 3, 4], 0), 0x0403_0201);
+    assert_eq!(word(&[0, 1, 2, 3, 4], 1), 0x0403_0201);
+    assert_eq!(word(&[1, 2, 3, 4], 1), 0);
+}
+
+/// The layout of bytes no check has seen: each number clamped into the
+/// range the decoder handles, in range ones kept.
+#[test]
+fn layouts_clamp_what_they_read() {
+    let read = |words: &[(usize, i64)]| {
+        let mut bytes = vec![0u8; 200];
+        for &(at, value) in words {
+            bytes[at..at + 4].copy_from_slice(&(value as u32).to_le_bytes());
+        }
+        Layout::read(&bytes)
+    };
+    // Resolution 2 to 256; block side 1 to min(n, 8).
+    for (n, block, want) in
+        [(0, 0, (2, 1)), (1, 9, (2, 2)), (3, 8, (3, 3)), (5, 4, (5, 4)), (300, 9, (256, 8))]
+    {
+        let l = read(&[(12, n), (140, block)]);
+        assert_eq!((l.n, l.block), want, "n {n}, block {block}");
+        assert_eq!(l.per_axis, want.0.div_ceil(want.1));
+    }
+    // Mantissa bits 1 to 23; vertex bits 4 to 24.
+    for (m, vb, want) in
+        [(0, 3, (1, 4)), (1, 4, (1, 4)), (12, 16, (12, 16)), (23, 24, (23, 24)), (24, 25, (23, 24))]
+    {
+        let q = read(&[(12, 4), (128, m), (136, vb)]).quantizer;
+        assert_eq!((q.float.mantissa, q.vertex_bits), want, "mantissa {m}, vertex bits {vb}");
+    }
+    // Low exponent −60 to 0, 0 outside.
+    for (low, want) in [(-61, 0), (-60, -60), (-8, -8), (0, 0), (1, 0), (i64::from(i32::MIN), 0)] {
+        let q = read(&[(12, 4), (128, 12), (132, low)]).quantizer;
+        assert_eq!(q.float.low_exponent, want, "low exponent {low}");
+    }
+}
