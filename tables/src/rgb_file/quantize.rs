@@ -79,7 +79,8 @@ impl Minifloat {
             (a * pow2(m as i32 - low)).round() as i64
         } else {
             let e = (a.to_bits() >> 52) as i32 - 1023;
-            let fraction = a * pow2(-e) - 1.0;
+            // The significand from the bits (2^-e would underflow at e = 1023).
+            let fraction = f64::from_bits((a.to_bits() & ((1 << 52) - 1)) | (1023 << 52)) - 1.0;
             ((e - low + 1) as i64) * (1 << m) + (fraction * pow2(m as i32)).round() as i64
         };
         if x < 0.0 { -k } else { k }
@@ -218,6 +219,12 @@ mod tests {
         assert!(f.decode(0).is_sign_positive(), "0 is +0.0, as a fitted table's zero");
         assert_eq!(f.decode(i64::MAX), f64::INFINITY);
         assert_eq!(f.decode(-(3 << 12)), -2f64.powi(-6));
+        // The top octave of f64 keeps rising and decodes to itself.
+        let below = 2f64.powi(1023) * (1.0 - 2f64.powi(-13));
+        let (k0, k1, k2) = (f.encode(below), f.encode(2f64.powi(1023)), f.encode(f64::MAX));
+        assert!(k0 < k1 && k1 < k2, "{k0} {k1} {k2}");
+        assert_eq!(f.decode(k1), 2f64.powi(1023));
+        assert_eq!(f.decode(f.encode(1.5 * 2f64.powi(1023))), 1.5 * 2f64.powi(1023));
     }
 
     /// `pow2` is exact over f64's normal exponents, 0 below, infinite above.
