@@ -30,7 +30,7 @@ use crate::color::rgb::LinearRgb;
 use crate::color::rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded, Split};
 use crate::color::rgb_table::{BuiltInTable, RgbTable};
 use crate::color::space::{ACES, D65, RgbSpace, aces_d60, standard};
-use crate::color::space_spectra::unbounded_in;
+use crate::color::space_spectra::{Clamp, reflectance_in, unbounded_in};
 use crate::error::Error;
 use crate::spectrum::data::lights;
 
@@ -123,6 +123,12 @@ impl<S: Table> BuiltIn<S> {
     #[inline]
     pub fn albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
         self.table().albedo(rgb)
+    }
+
+    /// [`RgbSpace::reflectance`], by this space's table alone.
+    #[inline]
+    pub fn reflectance(&self, rgb: impl Into<LinearRgb>) -> (RgbAlbedo, [Clamp; 3]) {
+        reflectance_in(self.table(), rgb.into())
     }
 
     /// [`RgbSpace::unbounded`], by this space's table alone.

@@ -51,6 +51,7 @@ pub use matrix::Matrix;
 pub use rgb::LinearRgb;
 pub use rgb_spectra::{RgbAlbedo, RgbIlluminant, RgbUnbounded};
 pub use space::RgbSpace;
+pub use space_spectra::Clamp;
 pub use srgb::XYZ_TO_SRGB;
 pub use texel::RgbTexel;
 pub use xyz::Xyz;

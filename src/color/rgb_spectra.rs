@@ -28,6 +28,7 @@
 //! ```
 
 use crate::spectrum::{Pieces, SigmoidPolynomial, Spectrum, TabulatedSpectrum};
+use std::borrow::Cow;
 
 /// A reflectance from an RGB colour: a sigmoid polynomial, in [0, 1].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -190,6 +191,11 @@ impl Spectrum for RgbIlluminant {
             self.poly.eval_many_f32(to_f32(self.scale), l, v);
             v.iter_mut().zip(light.iter()).for_each(|(v, e)| *v *= e);
         }
+    }
+
+    /// The illuminant's breaks: the tint is smooth.
+    fn kinks(&self) -> Cow<'_, [f64]> {
+        Cow::Borrowed(self.illuminant.breaks())
     }
 
     /// A bound: the scale times the polynomial's maximum times the

@@ -65,6 +65,24 @@ impl RgbSpace {
         self.table().albedo(rgb.into())
     }
 
+    /// The reflectance of any colour a texture holds, and what was done to
+    /// its components outside [0, 1]: each clamped into [0, 1] (NaN as 0),
+    /// then looked up as [`RgbSpace::albedo`] (one type for every texel;
+    /// no `Result`).
+    ///
+    /// ```
+    /// use speclab::color::{Clamp, LinearRgb, RgbSpace};
+    /// let srgb = RgbSpace::srgb();
+    /// let (albedo, clamped) = srgb.reflectance(LinearRgb::new(1.2, 0.5, -0.1));
+    /// assert_eq!(clamped, [Clamp::Above, Clamp::Inside, Clamp::Below]);
+    /// assert_eq!(albedo, srgb.albedo(LinearRgb::new(1.0, 0.5, 0.0))?);
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    #[inline]
+    pub fn reflectance(&self, rgb: impl Into<LinearRgb>) -> (RgbAlbedo, [Clamp; 3]) {
+        reflectance_in(self.table(), rgb.into())
+    }
+
     /// The colour of a reflectance under the space's illuminant, white
     /// `Y = 1`: `∫ L·R·c̄ / ∫ L·ȳ`, integrated as the exact reference
     /// integrates.
@@ -134,4 +152,31 @@ impl RgbTable {
     pub fn fit(space: &RgbSpace, resolution: usize) -> RgbTable {
         RgbTable::fitted(&space.fit, space.name(), resolution)
     }
+}
+
+/// What [`RgbSpace::reflectance`] did with one component.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Clamp {
+    /// In [0, 1]: taken as it is.
+    Inside,
+    /// Below 0 (or −∞): taken as 0.
+    Below,
+    /// Above 1 (or +∞): taken as 1.
+    Above,
+    /// NaN: taken as 0.
+    NotANumber,
+}
+
+/// [`RgbSpace::reflectance`] by `table`.
+pub(crate) fn reflectance_in(table: &RgbTable, rgb: LinearRgb) -> (RgbAlbedo, [Clamp; 3]) {
+    let c = rgb.to_array();
+    let clamp = c.map(|v| match v {
+        v if v.is_nan() => Clamp::NotANumber,
+        v if v < 0.0 => Clamp::Below,
+        v if v > 1.0 => Clamp::Above,
+        _ => Clamp::Inside,
+    });
+    let inside = LinearRgb::from(c.map(|v| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) }));
+    let albedo = table.albedo(inside).unwrap_or_else(|_| unreachable!("components clamped into [0, 1]"));
+    (albedo, clamp)
 }

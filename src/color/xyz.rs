@@ -2,26 +2,31 @@
 //! (see [`super::triple`]). The conversion to linear sRGB,
 //! [`Xyz::to_linear_srgb`], lives with the colour space (`srgb.rs`).
 //!
-//! **Two conventions.** Every XYZ this crate computes is the assignment's:
-//! `∫ v(λ)·c̄(λ) dλ` over 380–730 nm, in the units of the spectrum `v`
-//! times nanometres, so a constant spectrum of 1 has `Y = ∫ȳ =`
-//! [`Y_BAR_INTEGRAL`] (106.8489): what Appendix 2 tabulates.
-//! [`Xyz::normalized`] gives a renderer's: divided by ∫ȳ, so that a
-//! constant 1 has `Y = 1`. pbrt-v4 divides by its `CIE_Y_integral`,
-//! 106.856895, the integral over 360–830 nm; Mitsuba 3 by 106.7502594;
-//! this crate's range is 380–730 nm throughout, so its ∫ȳ is over that.
+//! **Two conventions.** Every XYZ this crate computes is an integral,
+//! `∫ v(λ)·c̄(λ) dλ` over the range its wavelengths were drawn in (or its
+//! buckets cut, or its reference integrated over), in the units of the
+//! spectrum `v` times nanometres, so a constant spectrum of 1 has
+//! `Y = ∫ȳ`: 106.8489 over the assignment's 380–730 nm
+//! ([`Y_BAR_INTEGRAL`]), what Appendix 2 tabulates. A renderer's divides
+//! by what weighed it, so that a constant 1 has `Y = 1`:
+//! [`Domain::normalized`](crate::sampling::Domain::normalized) for drawn
+//! wavelengths and the exact reference (106.8569 over 360–830 nm with the
+//! CIE 1931 1 nm table: pbrt-v4's `CIE_Y_integral`, 106.856895; Mitsuba 3
+//! divides by 106.7502594, its own 5 nm table's sum), `to_normalized_xyz`
+//! for fixed wavelengths and buckets (their own white).
 //!
 //! ```
-//! use speclab::{Xyz, spectrum::{Constant, observer::Y_BAR_INTEGRAL}, sampling::reference};
+//! use speclab::{Xyz, spectrum::{Constant, observer::Y_BAR_INTEGRAL}, sampling::{reference, Domain}};
 //! let sum: Xyz = [Xyz::new(1.0, 2.0, 3.0), Xyz::from([0.5, 0.5, 0.5])].into_iter().sum();
 //! assert_eq!(sum / 2.0, Xyz::new(0.75, 1.25, 1.75));
 //! let one = reference::white(&Constant::new(1.0)); // the assignment's: Y = ∫ȳ
 //! assert!((one.y - Y_BAR_INTEGRAL).abs() < 1e-12 * one.y);
-//! assert!((one.normalized().y - 1.0).abs() < 1e-12); // a renderer's: Y = 1
+//! let domain = Domain::VISIBLE; // a renderer's: Y = 1
+//! assert!((domain.normalized(domain.reference(&[&Constant::new(1.0)])?).y - 1.0).abs() < 1e-12);
+//! # Ok::<(), speclab::Error>(())
 //! ```
 
 use crate::spectrum::Float;
-use crate::spectrum::observer::Y_BAR_INTEGRAL;
 
 use crate::color::triple::triple_arithmetic;
 
@@ -85,15 +90,6 @@ impl Xyz {
             return Xyz::ZERO;
         }
         Xyz::new(x * luminance / y, luminance, (1.0 - x - y) * luminance / y)
-    }
-
-    /// A renderer's convention: this XYZ (the assignment's, spectrum·nm)
-    /// divided by ∫ȳ over 380–730 nm ([`Y_BAR_INTEGRAL`]), so that a
-    /// constant spectrum of 1 has `Y = 1` (see the module overview).
-    #[inline]
-    #[must_use]
-    pub fn normalized(self) -> Xyz {
-        self * (1.0 / Y_BAR_INTEGRAL)
     }
 }
 

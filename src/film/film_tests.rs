@@ -35,7 +35,12 @@ fn buckets_split_their_range_evenly() {
 fn a_splat_adds_each_wavelength_over_its_pdf_to_its_bucket() {
     let b = Buckets::new(range(380.0, 730.0), 7).unwrap();
     let mut film = SpectralFilm::new((3, 2), b, Kind::Emissive).unwrap();
-    let h = HeroSample::<4>::from_wavelengths([385.0, 440.0, 441.0, 729.0], [0.5, 0.25, 0.125, 1.0]).unwrap();
+    let h = HeroSample::<4>::from_wavelengths_with(
+        [385.0, 440.0, 441.0, 729.0],
+        [0.5, 0.25, 0.125, 1.0],
+        &crate::spectrum::DenseObserver::ASSIGNMENT,
+    )
+    .unwrap();
     let v = SampledSpectrum::new([1.0, 2.0, 3.0, 4.0]);
     film.splat((2, 1), &h, v).unwrap();
     film.splat((2, 1), &h, v).unwrap();
@@ -57,7 +62,12 @@ fn a_splat_adds_each_wavelength_over_its_pdf_to_its_bucket() {
 fn terminated_secondaries_are_not_splatted() {
     let b = Buckets::new(range(380.0, 730.0), 350).unwrap();
     let mut film = SpectralFilm::new((1, 1), b, Kind::Emissive).unwrap();
-    let mut h = HeroSample::<4>::from_pdf(0.3, &Uniform::ASSIGNMENT);
+    let mut h = HeroSample::<4>::from_pdf_with(
+        0.3,
+        &Uniform::ASSIGNMENT,
+        &crate::spectrum::DenseObserver::ASSIGNMENT,
+    )
+    .unwrap();
     h.terminate_secondary();
     film.splat((0, 0), &h, SampledSpectrum::splat(1.0)).unwrap();
     let pixel = film.image().pixel(0, 0).unwrap().to_vec();
@@ -74,7 +84,12 @@ fn rows_splat_as_the_film_does() {
         SpectralFilm::new((2, 3), b, Kind::Reflective).unwrap(),
         SpectralFilm::new((2, 3), b, Kind::Reflective).unwrap(),
     );
-    let h = HeroSample::<4>::from_pdf(0.7, &Uniform::ASSIGNMENT);
+    let h = HeroSample::<4>::from_pdf_with(
+        0.7,
+        &Uniform::ASSIGNMENT,
+        &crate::spectrum::DenseObserver::ASSIGNMENT,
+    )
+    .unwrap();
     let v = patches::E2.sample(&h);
     whole.splat((1, 2), &h, v).unwrap();
     let mut rows: Vec<FilmRow<'_>> = by_rows.rows_mut().collect();
@@ -92,7 +107,12 @@ fn the_film_estimates_each_bucket_without_bias() {
     let mut film = SpectralFilm::new((1, 1), b, Kind::Emissive).unwrap();
     let n = 4000;
     for i in 0..n {
-        let h = HeroSample::<4>::from_pdf((i as f64 + 0.5) / n as f64, &Uniform::ASSIGNMENT);
+        let h = HeroSample::<4>::from_pdf_with(
+            (i as f64 + 0.5) / n as f64,
+            &Uniform::ASSIGNMENT,
+            &crate::spectrum::DenseObserver::ASSIGNMENT,
+        )
+        .unwrap();
         film.splat((0, 0), &h, SampledSpectrum::splat(1.0)).unwrap();
     }
     let pixel = film.image().pixel(0, 0).unwrap().to_vec();
@@ -110,7 +130,8 @@ fn a_whole_nm_film_develops_to_the_hero_estimate() {
     let n = 500;
     for i in 0..n {
         let h =
-            HeroSample::<4, f32>::from_pdf_with((i as f32 + 0.5) / n as f32, &Uniform::ASSIGNMENT, &sensor);
+            HeroSample::<4, f32>::from_pdf_with((i as f32 + 0.5) / n as f32, &Uniform::ASSIGNMENT, &sensor)
+                .unwrap();
         let v = h.sample(&lights::F11) * h.sample(&patches::G4);
         hero += h.to_xyz(v);
         film.splat((0, 0), &h, v).unwrap();

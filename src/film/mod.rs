@@ -29,7 +29,7 @@
 //! let mut film = SpectralFilm::new((1, 1), buckets, Kind::Reflective)?;
 //! let sensor = Sensor::observer(StandardObserver::Cie1931);
 //! for i in 0..1024 {
-//!     let h = HeroSample::<4>::from_pdf_with((i as f64 + 0.5) / 1024.0, &Uniform::ASSIGNMENT, &sensor);
+//!     let h = HeroSample::<4>::from_pdf_with((i as f64 + 0.5) / 1024.0, &Uniform::ASSIGNMENT, &sensor)?;
 //!     film.splat((0, 0), &h, patches::A1.sample(&h))?;
 //! }
 //! // Developed under D65 and under A: the card's colour under each.

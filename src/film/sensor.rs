@@ -280,4 +280,15 @@ impl Observer for Sensor {
         let (nearest, rows) = (at.nearest_nm(), T::choose(&self.curves.f32, &self.curves.f64));
         std::array::from_fn(|j| entry(rows, nearest[j]))
     }
+
+    /// 360–830 nm, where its curves are tabulated (zero outside its
+    /// [`support`](Sensor::support)).
+    fn data_range(&self) -> WavelengthRange {
+        WavelengthRange::VISIBLE
+    }
+
+    /// The middle curve's, read at the nearest whole nanometre.
+    fn y_integral(&self, range: WavelengthRange) -> f64 {
+        crate::spectrum::observer::cells_integral(&self.curves.f64, 1, range)
+    }
 }

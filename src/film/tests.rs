@@ -131,7 +131,7 @@ fn wavelengths_drawn_by_a_sensor_estimate_its_responses_without_bias() {
             let n = 20_000;
             let (mut sum, mut squares) = ([0.0; 3], [0.0; 3]);
             for _ in 0..n {
-                let h = HeroSample::<4>::from_pdf_with(u.next(), pdf, &sensor);
+                let h = HeroSample::<4>::from_pdf_with(u.next(), pdf, &sensor).unwrap();
                 let e = h.to_xyz(h.sample(&v)).to_array();
                 (0..3).for_each(|k| {
                     sum[k] += e[k];

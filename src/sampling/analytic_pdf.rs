@@ -77,6 +77,14 @@ impl WavelengthPdf for Uniform {
         let c = (lambda - self.range.min()) / self.range.width();
         Some(if c > 0.0 { c.min(1.0) } else { 0.0 })
     }
+
+    fn support(&self) -> WavelengthRange {
+        self.range
+    }
+
+    fn is_uniform(&self) -> bool {
+        true
+    }
 }
 
 /// pbrt-v4's visible-wavelength density, `∝ 1/cosh²(a·(λ − 538))` with
@@ -161,6 +169,10 @@ impl WavelengthPdf for Visible {
         }
         let l = lambda.clamp(self.range.min(), self.range.max());
         Some((Self::tanh_at(l) - self.t0) / (self.t1 - self.t0))
+    }
+
+    fn support(&self) -> WavelengthRange {
+        self.range
     }
 
     /// One `atanh`: at `y = tanh(a·(λ − 538))`, `1/cosh² = 1 − y²`, so the

@@ -21,7 +21,7 @@
 //! use speclab::sampling::pdf::{LightPdf, Visible, WavelengthPdf};
 //! let f11 = BinnedPdf::new(&LightPdf::light(&lights::F11)?, 256)?;
 //! let visible = BinnedPdf::new(&Visible::ASSIGNMENT, 256)?;
-//! let h = HeroSample::<4>::from_pdf(0.3, &f11);
+//! let h = HeroSample::<4>::from_pdf_with(0.3, &f11, &speclab::spectrum::DenseObserver::ASSIGNMENT).unwrap();
 //! assert!(h.pdf().iter().all(|&p| p > 0.0));
 //! // 545 nm is on one of F11's lines, 500 nm between them.
 //! assert!(f11.pdf(545.0) > 10.0 * f11.pdf(500.0) && visible.pdf(545.0) > visible.pdf(400.0));
@@ -30,6 +30,7 @@
 
 use crate::error::Error;
 use crate::sampling::pdf::WavelengthPdf;
+use crate::spectrum::WavelengthRange;
 
 /// The most bins a [`BinnedPdf`] takes.
 pub const MAX_BINS: usize = 1 << 14;
@@ -83,6 +84,12 @@ impl BinnedPdf {
 }
 
 impl WavelengthPdf for BinnedPdf {
+    /// The first cut to the last.
+    fn support(&self) -> WavelengthRange {
+        let (first, last) = (self.knots[0], self.knots[self.knots.len() - 1]);
+        WavelengthRange::new(first, last).unwrap_or(WavelengthRange::VISIBLE)
+    }
+
     #[inline]
     fn sample(&self, u: f64) -> f64 {
         self.sample_with_inv_pdf(u).0

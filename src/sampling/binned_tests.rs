@@ -13,6 +13,9 @@ impl WavelengthPdf for Stuck {
     fn pdf(&self, _lambda: f64) -> f64 {
         0.0
     }
+    fn support(&self) -> WavelengthRange {
+        WavelengthRange::ASSIGNMENT
+    }
 }
 
 #[test]

@@ -1,6 +1,8 @@
 //! The interface of every wavelength density ([`WavelengthPdf`], public
 //! as `sampling::pdf::WavelengthPdf`), below the densities themselves.
 
+use crate::spectrum::WavelengthRange;
+
 /// A probability density over wavelengths that can be sampled by inverting
 /// its cumulative distribution.
 pub trait WavelengthPdf {
@@ -9,6 +11,12 @@ pub trait WavelengthPdf {
     fn sample(&self, u: f64) -> f64;
     /// The density at `lambda`, 1/nm; zero outside the support.
     fn pdf(&self, lambda: f64) -> f64;
+
+    /// The range every wavelength it draws lies in: what an observer's
+    /// data must cover to weigh them
+    /// ([`HeroSample::from_pdf_with`](crate::HeroSample::from_pdf_with),
+    /// [`Domain::new`](crate::sampling::Domain::new) check it).
+    fn support(&self) -> WavelengthRange;
 
     /// The cumulative distribution at `lambda`, `∫ pdf` up to it, in
     /// `[0, 1]` (0 for NaN), if the distribution knows it: renderers never
@@ -21,6 +29,14 @@ pub trait WavelengthPdf {
     /// is 0 (or so small that its reciprocal overflows).
     fn inv_pdf(&self, lambda: f64) -> f64 {
         reciprocal(self.pdf(lambda))
+    }
+
+    /// True if the density is constant over its support: a
+    /// [`Domain`](crate::sampling::Domain) then draws its hero samples in
+    /// fixed point, as [`HeroSample::new`](crate::HeroSample::new) does,
+    /// when the support is whole nanometres. `false` by default.
+    fn is_uniform(&self) -> bool {
+        false
     }
 
     /// `sample(u)` and its `inv_pdf`, together (a tabulated pdf finds the
@@ -46,6 +62,12 @@ macro_rules! forward_pdf {
             }
             fn cdf(&self, lambda: f64) -> Option<f64> {
                 (**self).cdf(lambda)
+            }
+            fn support(&self) -> WavelengthRange {
+                (**self).support()
+            }
+            fn is_uniform(&self) -> bool {
+                (**self).is_uniform()
             }
             #[inline]
             fn inv_pdf(&self, lambda: f64) -> f64 {

@@ -6,9 +6,11 @@
 //! into 380–730 nm (Wilkie et al. 2014, "Hero Wavelength Spectral
 //! Sampling"). Every `λⱼ` is then uniform on the range, with pdf `1/W`.
 //! `K = 1` is plain single-wavelength random sampling; `K = 0` does not
-//! compile. A renderer with its own sampler or wavelength distribution
-//! hands its wavelengths and their pdfs to [`HeroSample::from_wavelengths`],
-//! or its uniform number and a [`WavelengthPdf`] to [`HeroSample::from_pdf`].
+//! compile. A renderer names its range, density and observer once in a
+//! [`Domain`](crate::sampling::Domain) and draws from it
+//! ([`Domain::hero`](crate::sampling::Domain::hero)); with its own sampler
+//! it hands its wavelengths and their pdfs to
+//! [`HeroSample::from_wavelengths_with`].
 //!
 //! A hero sample is the drawn kind of wavelengths (see
 //! [`super::wavelengths`]): drawing it looks up the observer once per
@@ -44,14 +46,23 @@ use crate::error::Error;
 use crate::sampling::pdf::WavelengthPdf;
 use crate::sampling::wavelengths::{Weighted, weighted_wavelengths};
 use crate::spectrum::DenseObserver;
-use crate::spectrum::lookup::ASSIGNMENT_OFFSET;
+use crate::spectrum::lookup::{ASSIGNMENT_OFFSET, DENSE_RANGE};
 use crate::spectrum::observer::{AssignmentObserver, Observer};
-use crate::spectrum::{Float, LAMBDA_MIN, LAMBDA_WIDTH, SampledSpectrum};
+use crate::spectrum::{Float, LAMBDA_WIDTH, SampledSpectrum, WavelengthRange};
 
 /// K wavelengths drawn together (a hero and K − 1 companions), each with
 /// its density, and their weights `c̄(λⱼ)/(K·pdfⱼ)`: the drawn kind of
 /// wavelengths (see [`FixedWavelengths`](super::wavelengths::FixedWavelengths)
 /// for the fixed kind, which has no density).
+///
+/// **Size**: `HeroSample<4, f32>` is 88 bytes (16 of wavelengths, 8 of
+/// their whole nanometres, 64 of weight rows `[w_X, w_Y, w_Z, 1/(K·pdf)]`);
+/// pbrt-v4's `SampledWavelengths` is 32 (wavelengths and pdfs). The
+/// weights are found once, when the sample is drawn, so that `to_xyz` and
+/// a film's splat need no observer and cost one multiply-add per
+/// wavelength; a renderer whose rays must stay small carries the hero
+/// wavelength alone (4 bytes) and rebuilds the sample with
+/// [`Domain::hero_at`](crate::sampling::Domain::hero_at).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HeroSample<const K: usize, T: Float = f64>(pub(crate) Weighted<K, T>);
 
@@ -94,7 +105,7 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     #[inline(always)]
     #[must_use]
     pub fn new(u: T) -> Self {
-        Self::with_observer(u, &DenseObserver::ASSIGNMENT)
+        Self::uniform(u, &DenseObserver::ASSIGNMENT)
     }
 
     /// [`HeroSample::new`] weighted by the exact observer ([`AssignmentObserver`],
@@ -104,50 +115,71 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     #[inline(always)]
     #[must_use]
     pub fn exact(u: T) -> Self {
-        Self::with_observer(u, &AssignmentObserver)
+        Self::uniform(u, &AssignmentObserver)
     }
 
-    /// [`HeroSample::new`] with the weights of `observer`.
+    /// [`HeroSample::new`] with the weights of `observer`: an
+    /// [`Error::RangeOutside`] if its data do not cover 380–730 nm (a
+    /// sensor's that stop short would weigh those wavelengths 0).
+    #[inline]
+    pub fn with_observer(u: T, observer: &impl Observer) -> Result<Self, Error> {
+        covers(observer, WavelengthRange::ASSIGNMENT)?;
+        Ok(Self::uniform(u, observer))
+    }
+
+    /// [`HeroSample::new`] weighted by `observer` (covering 380–730 nm).
     #[inline(always)]
-    #[must_use]
-    pub fn with_observer(u: T, observer: &impl Observer) -> Self {
+    fn uniform(u: T, observer: &impl Observer) -> Self {
+        Self::uniform_in(u, UniformGrid::ASSIGNMENT, observer)
+    }
+
+    /// Uniform over `grid`'s whole nanometres, in fixed point (see
+    /// [`HeroSample::new`]), weighted by `observer` (covering it).
+    #[inline(always)]
+    pub(crate) fn uniform_in(u: T, grid: UniformGrid, observer: &impl Observer) -> Self {
         let () = Self::NONZERO;
-        // Positions in 2⁻¹⁶ nm from 380 nm: [0, PERIOD), PERIOD = W·2¹⁶.
-        const PERIOD: u32 = (LAMBDA_WIDTH as u32) << 16;
-        // (The minimum only tells the compiler that p0 < PERIOD, so that the
+        // Positions in 2⁻¹⁶ nm from the range's start: [0, period).
+        let period = grid.width << 16;
+        // (The minimum only tells the compiler that p0 < period, so that the
         // nearest whole nanometres are known to be in the table.)
-        let p0 = ((fract(u.to_f64()) * f64::from(PERIOD)) as u32).min(PERIOD - 1);
+        let p0 = ((fract(u.to_f64()) * f64::from(period)) as u32).min(period - 1);
         let position = |j: usize| {
-            let p = p0 + (u64::from(PERIOD) * j as u64 / K as u64) as u32;
-            if p >= PERIOD { p - PERIOD } else { p }
+            let p = p0 + (u64::from(period) * j as u64 / K as u64) as u32;
+            if p >= period { p - period } else { p }
         };
         let p: [u32; K] = std::array::from_fn(position);
-        let lambda = std::array::from_fn(|j| T::from_f64(LAMBDA_MIN + f64::from(p[j]) * (1.0 / 65536.0)));
+        let start = DENSE_START + f64::from(grid.offset);
+        let lambda = std::array::from_fn(|j| T::from_f64(start + f64::from(p[j]) * (1.0 / 65536.0)));
         // The nearest whole nanometre's index from 360 nm: half a nanometre
-        // and 380 − 360 nm added in one constant before the shift.
-        const ROUND: u32 = 0x8000 + ((ASSIGNMENT_OFFSET as u32) << 16);
-        let nearest = std::array::from_fn(|j| ((p[j] + ROUND) >> 16) as u16);
+        // and the range's offset added in one constant before the shift.
+        let round = 0x8000 + (grid.offset << 16);
+        let nearest = std::array::from_fn(|j| ((p[j] + round) >> 16) as u16);
         let h = HeroSample(Weighted { lambda, nearest, rows: [[T::ZERO; 4]; K] });
-        Self::weighted(h, [T::from_f64(LAMBDA_WIDTH); K], observer)
+        Self::weighted(h, [T::from_f64(f64::from(grid.width)); K], observer)
     }
 
     /// The sample for `u` under the density `pdf`, rotated in primary-sample
     /// space: `λⱼ = P⁻¹((u + j/K) mod 1)`, so that every `λⱼ` has density p
     /// and the estimate `Σⱼ c̄·vⱼ / (K·p(λⱼ))` stays unbiased; weighted by
-    /// the dense observer, as [`HeroSample::new`] (with [`Uniform`](crate::sampling::pdf::Uniform), this is
-    /// [`HeroSample::new`]'s sample to rounding). `u` is taken as in
-    /// [`HeroSample::new`].
-    #[inline(always)]
-    #[must_use]
-    pub fn from_pdf<P: WavelengthPdf + ?Sized>(u: T, pdf: &P) -> Self {
-        Self::from_pdf_with(u, pdf, &DenseObserver::ASSIGNMENT)
+    /// `observer` (`DenseObserver::CIE_1931` for a renderer's,
+    /// [`AssignmentObserver`] for the exact assignment's). An
+    /// [`Error::RangeOutside`] if the pdf draws where the observer has no
+    /// data (those wavelengths would weigh nothing). `u` is taken as in
+    /// [`HeroSample::new`]. A renderer checks once and draws without a
+    /// `Result`: [`Domain::hero`](crate::sampling::Domain::hero).
+    #[inline]
+    pub fn from_pdf_with<P: WavelengthPdf + ?Sized>(
+        u: T,
+        pdf: &P,
+        observer: &impl Observer,
+    ) -> Result<Self, Error> {
+        covers(observer, pdf.support())?;
+        Ok(Self::drawn(u, pdf, observer))
     }
 
-    /// [`HeroSample::from_pdf`] with the weights of `observer` ([`AssignmentObserver`]
-    /// for the exact ones).
+    /// [`HeroSample::from_pdf_with`] without the check (the caller's own).
     #[inline(always)]
-    #[must_use]
-    pub fn from_pdf_with<P: WavelengthPdf + ?Sized>(u: T, pdf: &P, observer: &impl Observer) -> Self {
+    pub(crate) fn drawn<P: WavelengthPdf + ?Sized>(u: T, pdf: &P, observer: &impl Observer) -> Self {
         let () = Self::NONZERO;
         let u = fract(u.to_f64());
         let (mut lambda, mut inv_pdf) = ([T::ZERO; K], [T::ZERO; K]);
@@ -160,30 +192,24 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
 
     /// The sample of wavelengths `lambda` (nm) drawn with densities `pdf`
     /// (1/nm), from a renderer's own sampler and distribution, weighted by
-    /// the assignment's dense observer (zero outside 380–780 nm: a renderer
-    /// drawing from 360–830 nm uses [`HeroSample::from_wavelengths_with`]
-    /// and `DenseObserver::CIE_1931`, the CIE's 1 nm table over 360–830 nm).
-    /// Each wavelength must be finite and each pdf
-    /// finite and non-negative with a finite reciprocal (else an
-    /// [`Error::SampleWavelength`]); a pdf of 0 marks a wavelength that
-    /// contributes nothing.
-    pub fn from_wavelengths(lambda: [T; K], pdf: [T; K]) -> Result<Self, Error> {
-        Self::from_wavelengths_with(lambda, pdf, &DenseObserver::ASSIGNMENT)
-    }
-
-    /// [`HeroSample::from_wavelengths`] with the weights of `observer`.
+    /// `observer`. Each wavelength must be finite and inside the
+    /// observer's data (else an [`Error::SampleWavelength`] naming it), and
+    /// each pdf finite and non-negative with a finite reciprocal; a pdf of
+    /// 0 marks a wavelength that contributes nothing (and may lie anywhere).
     pub fn from_wavelengths_with(
         lambda: [T; K],
         pdf: [T; K],
         observer: &impl Observer,
     ) -> Result<Self, Error> {
         let () = Self::NONZERO;
+        let data = observer.data_range();
         let mut inv_pdf = [T::ZERO; K];
         for (index, ((&l, &p), w)) in lambda.iter().zip(&pdf).zip(&mut inv_pdf).enumerate() {
             let (l, p) = (l.to_f64(), p.to_f64());
             // A pdf so small that its reciprocal overflows is as unusable as ∞.
             let reciprocal = T::from_f64(if p > 0.0 { 1.0 / p } else { 0.0 });
-            if !(l.is_finite() && p.is_finite() && p >= 0.0 && reciprocal.to_f64().is_finite()) {
+            let seen = p == 0.0 || data.contains(l);
+            if !(l.is_finite() && p.is_finite() && p >= 0.0 && reciprocal.to_f64().is_finite() && seen) {
                 return Err(Error::SampleWavelength { index, lambda: l, pdf: p });
             }
             *w = reciprocal;
@@ -241,6 +267,18 @@ impl<const K: usize, T: Float> HeroSample<K, T> {
     }
 }
 
+/// `Ok` if `observer`'s data cover `range` (what a density of that support
+/// draws), else an [`Error::RangeOutside`].
+pub(crate) fn covers(observer: &impl Observer, range: WavelengthRange) -> Result<(), Error> {
+    let data = observer.data_range();
+    if range.within(data) {
+        Ok(())
+    } else {
+        let of = "the weighing observer";
+        Err(Error::RangeOutside { range: [range.min(), range.max()], of, data: [data.min(), data.max()] })
+    }
+}
+
 /// Rotation `j` of `K` from `u ∈ [0, 1)`: `(u + j/K) mod 1`.
 #[inline(always)]
 fn rotation(u: f64, j: usize, k: usize) -> f64 {
@@ -286,5 +324,33 @@ mod tests {
         for u in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 4.6e15, -1e300] {
             assert_eq!(fract(u), 0.0, "u = {u}");
         }
+    }
+}
+
+/// The first dense-table wavelength, nm (360).
+const DENSE_START: f64 = DENSE_RANGE.min();
+
+/// A uniform density's range as whole nanometres of the dense tables:
+/// `offset` from 360 nm, `width` nm (both whole, the range within
+/// 360–830 nm), where hero samples are drawn in fixed point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct UniformGrid {
+    pub(crate) offset: u32,
+    pub(crate) width: u32,
+}
+
+impl UniformGrid {
+    /// 380–730 nm.
+    pub(crate) const ASSIGNMENT: UniformGrid =
+        UniformGrid { offset: ASSIGNMENT_OFFSET as u32, width: LAMBDA_WIDTH as u32 };
+    /// 360–830 nm.
+    pub(crate) const VISIBLE: UniformGrid = UniformGrid { offset: 0, width: DENSE_RANGE.width() as u32 };
+
+    /// The grid of `range` if it is whole nanometres within 360–830 nm.
+    pub(crate) fn of(range: WavelengthRange) -> Option<UniformGrid> {
+        let (a, b) = (range.min() - DENSE_START, range.max() - DENSE_START);
+        let whole = a.fract() == 0.0 && b.fract() == 0.0 && a >= 0.0 && b > a;
+        (whole && range.max() <= DENSE_RANGE.max())
+            .then_some(UniformGrid { offset: a as u32, width: (b - a) as u32 })
     }
 }

@@ -161,6 +161,15 @@ impl PiecewisePdf {
             .map_or(0.0, |k| (value(&self.polys[k], lambda - self.ends[k]) / self.total()).max(0.0))
     }
 
+    /// The first piece's start to the last one's end: where it draws.
+    pub(crate) fn support(&self) -> WavelengthRange {
+        let (first, last) = (self.ends.first().copied(), self.ends.last().copied());
+        match (first, last) {
+            (Some(a), Some(b)) => WavelengthRange::new(a, b).unwrap_or(WavelengthRange::VISIBLE),
+            _ => WavelengthRange::VISIBLE,
+        }
+    }
+
     /// The CDF at `lambda`.
     pub(crate) fn cdf(&self, lambda: f64) -> f64 {
         match self.piece(lambda) {

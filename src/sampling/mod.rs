@@ -23,9 +23,10 @@
 //! One estimator serves all: XYZ ≈ Σ c̄(λ)·value(λ) / pdf(λ), averaged. A
 //! strategy only chooses the wavelengths and their pdf. **A new wavelength
 //! distribution** implements [`pdf::WavelengthPdf`] in `pdf.rs` or in the
-//! renderer; [`HeroSample::from_pdf`] rotates it in primary-sample space,
-//! and the exact variances and the study take it from there. Wavelengths
-//! from elsewhere enter through [`HeroSample::from_wavelengths`].
+//! renderer; [`Domain::new`] checks it against an observer once and
+//! [`Domain::hero`] rotates it in primary-sample space, and the exact
+//! variances and the study take it from there. Wavelengths from elsewhere
+//! enter through [`HeroSample::from_wavelengths_with`].
 //!
 //! This floor uses the spectrum and colour floors below it.
 //!
@@ -37,22 +38,24 @@
 //! ```
 //! use speclab::{data::{lights, patches}, HeroSample, Xyz};
 //! use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
+//! use speclab::{sampling::Domain, spectrum::DenseObserver};
 //! let f11 = LightPdf::light(&lights::F11)?;
 //! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform::ASSIGNMENT, &Visible::VISIBLE, &f11];
 //! let n = 64;
 //! // The renderer's own numbers, stratified over [0, 1/4): the hero rotations fill the rest.
 //! let own = |i: usize| (i as f64 + 0.5) / (4 * n) as f64;
 //! for pdf in pdfs {
+//!     let domain = Domain::new(pdf, DenseObserver::CIE_1931)?; // checked once
 //!     let mut pixel = Xyz::ZERO;
 //!     for i in 0..n {
-//!         let h = HeroSample::<4>::from_pdf(own(i), pdf);
+//!         let h = domain.hero::<4, f64>(own(i));
 //!         pixel += h.to_xyz(h.sample(&lights::F11) * h.sample(&patches::G4));
 //!     }
 //!     let exact = speclab::sampling::reference::xyz(&lights::F11, &patches::G4);
 //!     assert!(((pixel / n as f64).y - exact.y).abs() < 0.1 * exact.y);
 //! }
 //! // Or wavelengths and densities from the renderer's own distribution:
-//! let h = HeroSample::from_wavelengths([450.0, 520.0, 610.0, 680.0], [1.0 / 350.0; 4])?;
+//! let h = HeroSample::from_wavelengths_with([450.0, 520.0, 610.0, 680.0], [1.0 / 350.0; 4], &DenseObserver::CIE_1931)?;
 //! assert!(h.to_xyz(h.sample(&lights::D65)).y > 0.0);
 //! # Ok::<(), speclab::Error>(())
 //! ```
@@ -70,6 +73,7 @@ mod analytic_pdf;
 pub mod binned;
 pub mod buckets;
 mod density;
+pub mod domain;
 pub mod fitted;
 pub mod hero;
 mod light_pdf;
@@ -85,6 +89,7 @@ pub mod variance;
 pub mod wavelengths;
 mod widths;
 
+pub use domain::Domain;
 pub use hero::HeroSample;
 pub use prepared::PreparedLight;
 pub use regular::{AssignmentBand, Band, BoxAverage, Center, RegularSpectrum, VisibleBand};

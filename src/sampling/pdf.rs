@@ -28,11 +28,14 @@
 //! does, with no double reference.
 //!
 //! Hero sampling with any of them rotates in primary-sample space:
-//! [`HeroSample::from_pdf`](crate::HeroSample::from_pdf) draws
-//! `λⱼ = P⁻¹((u + j/K) mod 1)`, so each `λⱼ` has density p.
+//! [`Domain::hero`](crate::sampling::Domain::hero) and
+//! [`HeroSample::from_pdf_with`](crate::HeroSample::from_pdf_with) draw
+//! `λⱼ = P⁻¹((u + j/K) mod 1)`, so each `λⱼ` has density p. Each density
+//! says where it draws ([`WavelengthPdf::support`]): an observer whose
+//! data do not cover that is refused, never a silent 0.
 //!
 //! ```
-//! use speclab::{data::lights, HeroSample, spectrum::Mixture};
+//! use speclab::{data::lights, HeroSample, spectrum::{DenseObserver, Mixture}};
 //! use speclab::sampling::pdf::{LightPdf, Uniform, Visible, WavelengthPdf};
 //! let f11 = LightPdf::light(&lights::F11)?;
 //! let lambda = f11.sample(0.5);
@@ -44,9 +47,11 @@
 //! // Chosen at run time, without a double reference:
 //! let pdfs: [&dyn WavelengthPdf; 3] = [&Uniform::ASSIGNMENT, &Visible::VISIBLE, &scene];
 //! for pdf in pdfs {
-//!     let h = HeroSample::<4>::from_pdf(0.3, pdf);
+//!     let h = HeroSample::<4>::from_pdf_with(0.3, pdf, &DenseObserver::CIE_1931)?;
 //!     assert!(h.pdf().iter().all(|&p| p > 0.0));
 //! }
+//! // The assignment's observer stops at 780 nm: pbrt-v4's 360–830 nm is refused.
+//! assert!(HeroSample::<4>::from_pdf_with(0.3, &Visible::VISIBLE, &DenseObserver::ASSIGNMENT).is_err());
 //! # Ok::<(), speclab::Error>(())
 //! ```
 
@@ -160,6 +165,10 @@ impl WavelengthPdf for LightPdf {
 
     fn cdf(&self, lambda: f64) -> Option<f64> {
         Some(self.table.cdf(lambda))
+    }
+
+    fn support(&self) -> WavelengthRange {
+        self.table.support()
     }
 
     #[inline]

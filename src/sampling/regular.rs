@@ -265,6 +265,29 @@ impl<const M: usize, B: Bucketing<M>, T: Float> RegularSpectrum<M, B, T> {
         let columns = T::choose(Columns::<M, B>::F32, Columns::<M, B>::F64);
         Xyz::of_sums(column_sums(columns.each_ref().map(|c| &c[..]), &self.values))
     }
+
+    /// The `Y` of a constant 1, `W/M·Σ ȳᵢ` of the bucketed observer: what
+    /// these buckets normalise by (a constant, at compile time).
+    pub const WHITE_Y: f64 = white_y(B::ROWS_F64);
+
+    /// [`to_xyz`](Self::to_xyz) over [`WHITE_Y`](Self::WHITE_Y): a constant
+    /// 1 has `Y = 1` exactly, whatever the band.
+    #[inline]
+    #[must_use]
+    pub fn to_normalized_xyz(&self) -> Xyz {
+        self.to_xyz() / Self::WHITE_Y
+    }
+}
+
+/// `Σ rowsᵢ[1]`.
+const fn white_y<const M: usize>(rows: &[[f64; 4]; M]) -> f64 {
+    let mut sum = 0.0;
+    let mut i = 0;
+    while i < M {
+        sum += rows[i][1];
+        i += 1;
+    }
+    sum
 }
 
 impl<const M: usize, R: Band, T: Float> RegularSpectrum<M, Center<R>, T> {

@@ -41,7 +41,7 @@ pub fn hero<const K: usize>(light: &TabulatedSpectrum, surface: &TabulatedSpectr
 
 /// Per-channel variance of one `HeroSample<K>` estimate of
 /// `light × surface` with wavelengths drawn from `pdf`
-/// ([`crate::HeroSample::from_pdf`]). The pieces in primary-sample space
+/// ([`crate::HeroSample::from_pdf_with`]). The pieces in primary-sample space
 /// come from the pdf's CDF at the factors' breaks; a pdf without a CDF is
 /// integrated over 1,024 equal pieces of `u` instead.
 #[must_use]

@@ -28,9 +28,10 @@
 //! nanometres, 64 of weights); nothing here allocates.
 //!
 //! **What the luminance weights sum to** (`Σⱼ w_Yⱼ`, the Y of a spectrum
-//! that is 1 everywhere; [`luminance`](FixedWavelengths::luminance)
-//! divides by `Y_BAR_INTEGRAL`, 106.86 nm, so that a constant comes out
-//! as itself):
+//! that is 1 everywhere; fixed wavelengths'
+//! [`luminance`](FixedWavelengths::luminance) divides by that sum, a
+//! domain's [`luminance`](crate::sampling::Domain::luminance) by its
+//! `∫ȳ`, so that a constant comes out as itself):
 //! - drawn: a one-sample estimate of `∫ȳ dλ`, unbiased for the observer
 //!   it was weighted by (its mean over draws is `Y_BAR_INTEGRAL` for the
 //!   exact observer, and the integral of the dense observer's steps, 6e-8
@@ -171,8 +172,9 @@ macro_rules! weighted_wavelengths {
             /// `Σⱼ rowⱼ·vⱼ`, summed in `T` (four lanes wide: rows for
             /// drawn wavelengths, columns for fixed ones), returned in `f64` so that a
             /// pixel's sum of many estimates keeps its precision. The
-            /// assignment's convention, spectrum·nm;
-            /// [`Xyz::normalized`](crate::Xyz::normalized) gives a
+            /// assignment's convention, spectrum·nm; a domain's
+            /// [`normalized`](crate::sampling::Domain::normalized) (drawn
+            /// wavelengths) or the fixed ones' `to_normalized_xyz` gives a
             /// renderer's (a constant 1 has `Y = 1`).
             #[inline(always)]
             #[must_use]
@@ -186,17 +188,6 @@ macro_rules! weighted_wavelengths {
             #[must_use]
             pub fn y(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> T {
                 self.sums(&v)[1]
-            }
-
-            /// The luminance in the units of `v`: [`y`](Self::y) over
-            /// `∫ȳ dλ` ([`Y_BAR_INTEGRAL`](crate::spectrum::observer::Y_BAR_INTEGRAL)),
-            /// all in `T`, so that a constant spectrum's luminance is the
-            /// constant (on average, for drawn wavelengths; see the module
-            /// documentation for what each kind's weights sum to).
-            #[inline(always)]
-            #[must_use]
-            pub fn luminance(&self, v: $crate::spectrum::SampledSpectrum<K, T>) -> T {
-                self.y(v) * T::from_f64(1.0 / $crate::spectrum::observer::Y_BAR_INTEGRAL)
             }
 
             /// The weights of [`y`](Self::y), `w_Yⱼ`: `v.dot(&w)` is `y(v)`
@@ -278,6 +269,29 @@ impl<const M: usize, T: Float> FixedWavelengths<M, T> {
     fn sums(&self, v: &SampledSpectrum<M, T>) -> [T; 4] {
         let [x, y, z] = column_sums(self.1.each_ref().map(|c| &c[..]), &v.values);
         [x, y, z, T::ZERO]
+    }
+
+    /// The `Y` of a constant 1, `Σⱼ w_Yⱼ`: what these weights normalise by.
+    #[must_use]
+    pub fn white_y(&self) -> T {
+        self.1[1].iter().fold(T::ZERO, |s, &w| s + w)
+    }
+
+    /// [`to_xyz`](Self::to_xyz) over [`white_y`](Self::white_y): a
+    /// constant 1 has `Y = 1` exactly (these weights' own normalisation,
+    /// whatever range and observer they were made for).
+    #[inline]
+    #[must_use]
+    pub fn to_normalized_xyz(&self, v: SampledSpectrum<M, T>) -> Xyz {
+        self.to_xyz(v) / self.white_y().to_f64()
+    }
+
+    /// The luminance in the units of `v`: [`y`](Self::y) over
+    /// [`white_y`](Self::white_y), in `T`: a constant's is the constant.
+    #[inline]
+    #[must_use]
+    pub fn luminance(&self, v: SampledSpectrum<M, T>) -> T {
+        self.y(v) / self.white_y()
     }
 }
 

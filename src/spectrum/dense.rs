@@ -31,7 +31,7 @@
 //! let (light, surface) = (DenseSpectrum::new(&lights::F11), DenseSpectrum::new(&patches::H4));
 //! let mut pixel = speclab::Xyz::ZERO;
 //! for i in 0..256_u16 {
-//!     // `new` weighs by the dense observer (`with_observer(u, &DenseObserver)`).
+//!     // `new` weighs by the dense observer (`with_observer(u, &DenseObserver::ASSIGNMENT)?`).
 //!     let h = HeroSample::<4, f32>::new((f32::from(i) + 0.5) / 256.0);
 //!     pixel += h.to_xyz(light.sample(&h) * surface.sample(&h));
 //! }

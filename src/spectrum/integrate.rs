@@ -50,7 +50,10 @@ fn factor_pieces(
                 points.extend(p.breaks.iter().copied().filter(|&x| x > a && x < b));
                 degree += p.degree;
             }
-            None => degree += SMOOTH_EXTRA,
+            None => {
+                points.extend(f.kinks().iter().copied().filter(|&x| x > a && x < b));
+                degree += SMOOTH_EXTRA;
+            }
         }
     }
     (quadrature::pieces(points.into_iter()), degree)
@@ -114,8 +117,10 @@ pub(crate) fn integral(s: &dyn Spectrum, a: f64, b: f64) -> f64 {
             // change polynomial: pieces of at most 5 nm that end on it.
             let (first, last) = (((a - LAMBDA_MIN) / 5.0).floor(), ((b - LAMBDA_MIN) / 5.0).ceil());
             let count = (last - first).clamp(0.0, 1e6) as usize;
-            let grid = (0..=count).map(|k| LAMBDA_MIN + 5.0 * (first + k as f64)).filter(|&x| x > a && x < b);
-            (quadrature::pieces(grid.chain([a, b])), SMOOTH_EXTRA)
+            let grid = (0..=count).map(|k| LAMBDA_MIN + 5.0 * (first + k as f64));
+            let kinks = s.kinks().into_owned();
+            let inside = grid.chain(kinks).filter(|&x| x > a && x < b);
+            (quadrature::pieces(inside.chain([a, b])), SMOOTH_EXTRA)
         }
     };
     let [sum] = quadrature::integrate(quadrature::for_degree(degree), &points, |x| [s.eval(x)]);

@@ -192,6 +192,14 @@ pub trait Spectrum {
         None
     }
 
+    /// Where the spectrum may bend (its slope jump), nm, sorted: a
+    /// piecewise polynomial's breaks, and for another spectrum the breaks
+    /// of a table it is built on (a tinted illuminant's), so that
+    /// quadrature splits there. Empty by default.
+    fn kinks(&self) -> Cow<'_, [f64]> {
+        self.pieces().map_or(Cow::Borrowed(&[]), |p| p.breaks)
+    }
+
     /// The samples the spectrum interpolates, if it is the interpolant of
     /// samples (a table): the exact reference then takes a light's weights
     /// for them, and a light pdf their polynomials.
@@ -251,6 +259,9 @@ macro_rules! forward_spectrum {
             fn pieces(&self) -> Option<Pieces<'_>> {
                 (**self).pieces()
             }
+            fn kinks(&self) -> Cow<'_, [f64]> {
+                (**self).kinks()
+            }
             fn samples(&self) -> Option<Samples<'_>> {
                 (**self).samples()
             }
@@ -265,3 +276,11 @@ macro_rules! forward_spectrum {
 }
 
 forward_spectrum!(&S, Box<S>, std::sync::Arc<S>, std::rc::Rc<S>);
+
+/// The sorted union of `sets` of wavelengths.
+pub(crate) fn union<'a>(sets: impl Iterator<Item = Cow<'a, [f64]>>) -> Cow<'a, [f64]> {
+    let mut all: Vec<f64> = sets.flat_map(|s| s.into_owned()).collect();
+    all.sort_by(f64::total_cmp);
+    all.dedup();
+    Cow::Owned(all)
+}

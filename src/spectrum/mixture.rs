@@ -69,6 +69,11 @@ impl Spectrum for Mixture<'_> {
         Some(Pieces { breaks: Cow::Owned(breaks), degree })
     }
 
+    /// The union of the terms' kinks.
+    fn kinks(&self) -> Cow<'_, [f64]> {
+        crate::spectrum::interface::union(self.terms.iter().map(|(_, s)| s.kinks()))
+    }
+
     /// A bound: `Σ wᵢ·max Sᵢ` (the terms' maxima need not coincide).
     fn max_value(&self) -> f64 {
         self.terms.iter().map(|(w, s)| if *w > 0.0 { w * s.max_value() } else { 0.0 }).sum()

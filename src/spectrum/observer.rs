@@ -22,6 +22,7 @@ use crate::spectrum::float::Float;
 use crate::spectrum::interp;
 use crate::spectrum::lookup::{DENSE_ENTRIES, DENSE_RANGE, DENSE_VALUES, UniformLookup, entry};
 use crate::spectrum::piecewise::View;
+use crate::spectrum::range::WavelengthRange;
 use crate::spectrum::sampled::Wavelengths;
 use crate::spectrum::tabulated::TabulatedSpectrum;
 use crate::spectrum::{LAMBDA_MAX, LAMBDA_MIN};
@@ -110,6 +111,17 @@ pub trait Observer {
     /// weight; a sample sets it itself, so what an implementation puts
     /// there does not change the pdf).
     fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K];
+
+    /// The range its data cover: outside it every weight is 0, so a
+    /// density drawing there would lose those wavelengths (checked by
+    /// [`HeroSample::from_pdf_with`](crate::HeroSample::from_pdf_with) and
+    /// `from_wavelengths_with`).
+    fn data_range(&self) -> WavelengthRange;
+
+    /// `∫ȳ` over `range` as this observer weighs wavelengths drawn there
+    /// (its table's own interpolation; zero outside its data): the `Y` a
+    /// constant 1 has, what a renderer divides by.
+    fn y_integral(&self, range: WavelengthRange) -> f64;
 }
 
 /// The CIE 1931 2° observer of Appendix 1, interpolated by the clamped
@@ -133,6 +145,23 @@ impl Observer for AssignmentObserver {
             *row = if K < 4 { lone_row(l) } else { xyz_bar_row(l) }.map(T::from_f64);
         }
         rows
+    }
+
+    /// 380–780 nm, the assignment's table.
+    fn data_range(&self) -> WavelengthRange {
+        WavelengthRange::ASSIGNMENT.with_max(780.0)
+    }
+
+    /// The cubic's exact integral (0 past its data).
+    fn y_integral(&self, range: WavelengthRange) -> f64 {
+        interp::integral(
+            &CIE_Y_LAMBDA,
+            &CIE_Y_COEFFS,
+            &CIE_Y_BREAKS,
+            [0.0, f64::INFINITY],
+            range.min(),
+            range.max(),
+        )
     }
 }
 
@@ -217,6 +246,8 @@ pub struct DenseObserver {
 /// The rows of a dense observer, then `[0, 0, 0, 1]` outside.
 struct DenseRows {
     name: &'static str,
+    /// Where the table holds data (zeros elsewhere).
+    data: WavelengthRange,
     f64: [[f64; 4]; DENSE_ENTRIES],
     f32: [[f32; 4]; DENSE_ENTRIES],
 }
@@ -262,15 +293,59 @@ impl Observer for DenseObserver {
         let (nearest, rows) = (at.nearest_nm(), T::choose(&self.rows.f32, &self.rows.f64));
         std::array::from_fn(|j| entry(rows, nearest[j]))
     }
+
+    fn data_range(&self) -> WavelengthRange {
+        self.rows.data
+    }
+
+    /// Each whole nanometre's `ȳ` over its cell (a wavelength reads its
+    /// nearest), the cells cut to `range`: exactly what a sample drawn
+    /// over `range` weighs on average.
+    fn y_integral(&self, range: WavelengthRange) -> f64 {
+        cells_integral(&self.rows.f64, 1, range)
+    }
 }
 
-static ASSIGNMENT_ROWS: DenseRows = dense_rows("assignment", &assignment_rows());
-static CIE_1931_ROWS: DenseRows = dense_rows("CIE 1931 2°", &table_rows(&observers::CIE_1931_2));
-static CIE_1964_ROWS: DenseRows = dense_rows("CIE 1964 10°", &table_rows(&observers::CIE_1964_10));
+impl DenseObserver {
+    /// [`Observer::y_integral`] at compile time.
+    #[must_use]
+    pub const fn y_integral_const(&self, range: WavelengthRange) -> f64 {
+        cells_integral(&self.rows.f64, 1, range)
+    }
+}
+
+/// `Σ rows[i][column]·|[λᵢ − ½, λᵢ + ½] ∩ range|`, `λᵢ = 360 + i` nm: the
+/// integral of a 1 nm table read at the nearest whole nanometre.
+pub(crate) const fn cells_integral<const N: usize>(
+    rows: &[[f64; N]; DENSE_ENTRIES],
+    column: usize,
+    range: WavelengthRange,
+) -> f64 {
+    let mut sum = 0.0;
+    let mut i = 0;
+    while i < DENSE_VALUES {
+        let lambda = DENSE_RANGE.min() + i as f64;
+        let (a, b) = (lambda - 0.5, lambda + 0.5);
+        let a = if a > range.min() { a } else { range.min() };
+        let b = if b < range.max() { b } else { range.max() };
+        if b > a {
+            sum += rows[i][column] * (b - a);
+        }
+        i += 1;
+    }
+    sum
+}
+
+static ASSIGNMENT_ROWS: DenseRows =
+    dense_rows("assignment", WavelengthRange::ASSIGNMENT.with_max(780.0), &assignment_rows());
+static CIE_1931_ROWS: DenseRows =
+    dense_rows("CIE 1931 2°", WavelengthRange::VISIBLE, &table_rows(&observers::CIE_1931_2));
+static CIE_1964_ROWS: DenseRows =
+    dense_rows("CIE 1964 10°", WavelengthRange::VISIBLE, &table_rows(&observers::CIE_1964_10));
 
 /// Both precisions of `f64` rows.
-const fn dense_rows(name: &'static str, f64: &[[f64; 4]; DENSE_ENTRIES]) -> DenseRows {
-    DenseRows { name, f64: *f64, f32: crate::spectrum::float::rounded(f64) }
+const fn dense_rows(name: &'static str, data: WavelengthRange, f64: &[[f64; 4]; DENSE_ENTRIES]) -> DenseRows {
+    DenseRows { name, data, f64: *f64, f32: crate::spectrum::float::rounded(f64) }
 }
 
 /// `[x̄, ȳ, z̄, 1]` of the assignment's cubic per whole nanometre, and

@@ -105,6 +105,11 @@ impl Spectrum for Product<'_> {
         Some(Pieces { breaks: Cow::Owned(breaks), degree })
     }
 
+    /// The union of the factors' kinks.
+    fn kinks(&self) -> Cow<'_, [f64]> {
+        crate::spectrum::interface::union(self.factors.iter().map(|s| s.kinks()))
+    }
+
     /// A bound: `Π max Sᵢ` when every factor is non-negative (bounded
     /// below by 0, as lights and reflectances are: a maximum of 0 or
     /// more); `+∞` if a factor's maximum is negative or unknown.

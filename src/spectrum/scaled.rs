@@ -17,6 +17,7 @@
 //! assert_eq!(own.eval(500.0), 250.0);
 //! ```
 
+use std::borrow::Cow;
 use std::ops::Mul;
 
 use crate::spectrum::float::Float;
@@ -89,6 +90,10 @@ impl<S: Spectrum> Spectrum for Scaled<S> {
     /// degree.
     fn pieces(&self) -> Option<Pieces<'_>> {
         self.spectrum.pieces()
+    }
+
+    fn kinks(&self) -> Cow<'_, [f64]> {
+        self.spectrum.kinks()
     }
 
     fn running_integral(&self, lambda: f64) -> Option<f64> {

@@ -114,6 +114,13 @@ impl StandardObserver {
         }
     }
 
+    /// The standard observer whose 1 nm table `dense` is ([`dense`](Self::dense)'s inverse).
+    #[must_use]
+    pub fn of_dense(dense: &DenseObserver) -> StandardObserver {
+        let all = [StandardObserver::Cie1931, StandardObserver::Cie1964];
+        all.into_iter().find(|o| o.dense() == *dense).unwrap_or(StandardObserver::Assignment)
+    }
+
     /// `[x̄, ȳ, z̄]` at `lambda` nm; zero outside the data (and at NaN).
     #[must_use]
     pub fn xyz_bar(self, lambda: f64) -> [f64; 3] {
@@ -157,9 +164,18 @@ impl StandardObserver {
     }
 }
 
-/// A sampled path's observer: `HeroSample::with_observer(u, &StandardObserver::Cie1964)`
+/// A sampled path's observer: `HeroSample::with_observer(u, &StandardObserver::Cie1964)?`
 /// weighs its wavelengths by the 10° observer.
 impl Observer for StandardObserver {
+    fn data_range(&self) -> WavelengthRange {
+        StandardObserver::data_range(*self)
+    }
+
+    /// The exact integral of its interpolation (0 past its data).
+    fn y_integral(&self, range: WavelengthRange) -> f64 {
+        StandardObserver::y_integral(*self, range).unwrap_or(0.0)
+    }
+
     fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
         at.lambda().map(|l| {
             let [x, y, z] = self.xyz_bar(l.to_f64());

@@ -35,6 +35,8 @@ use crate::spectrum::lookup::UniformLookup;
 use crate::spectrum::piecewise::View;
 use crate::spectrum::sampled::{SampledSpectrum, Wavelengths};
 use crate::spectrum::validate::{self, Interpolation, Role};
+use speclab_tables::error::Position;
+use speclab_tables::read::Extend;
 
 /// Precomputed tables of a spectrum, as `speclab_tables::Codegen` writes them for
 /// static data: samples, the coefficients `[c0, c1, c2, c3]` of each
@@ -192,6 +194,48 @@ impl TabulatedSpectrum {
         }
         let values: Vec<f64> = self.values.iter().map(|v| v * factor).collect();
         Self::with_interpolation(self.lambda.to_vec(), values, self.role, self.interpolation)
+    }
+
+    /// The spectrum past its samples as `extend` says: [`Extend::Zero`] as
+    /// it is (zero outside), [`Extend::Hold`] its end values held out to
+    /// 360–830 nm (as `io::Load` holds a file's, and pbrt-v4 pads),
+    /// [`Extend::Refuse`] an [`Error::RangeOutside`] unless it covers
+    /// 380–730 nm.
+    ///
+    /// ```
+    /// use speclab::{Role, TabulatedSpectrum, io::Extend};
+    /// let s = TabulatedSpectrum::new(vec![400.0, 700.0], vec![2.0, 8.0], Role::Light)?;
+    /// let held = s.extended(Extend::Hold)?;
+    /// assert_eq!((held.eval(370.0), held.eval(820.0)), (2.0, 8.0));
+    /// assert_eq!(s.extended(Extend::Zero)?.eval(820.0), 0.0);
+    /// assert!(s.extended(Extend::Refuse).is_err());
+    /// # Ok::<(), speclab::Error>(())
+    /// ```
+    pub fn extended(&self, extend: Extend) -> Result<Self, Error> {
+        let [lo, hi] = self.ends;
+        match extend {
+            Extend::Zero => Ok(self.clone()),
+            Extend::Refuse => {
+                let need = WavelengthRange::ASSIGNMENT;
+                if lo <= need.min() && hi >= need.max() {
+                    Ok(self.clone())
+                } else {
+                    Err(Error::RangeOutside {
+                        range: [need.min(), need.max()],
+                        of: "the spectrum",
+                        data: [lo, hi],
+                    })
+                }
+            }
+            Extend::Hold => {
+                let mut samples = speclab_tables::text::Samples::default();
+                for (&l, &v) in self.lambda.iter().zip(self.values.iter()) {
+                    samples.push(l, v, Position::START, Position::START);
+                }
+                let held = speclab_tables::read::hold(samples);
+                Ok(Self::build(held.lambda, held.values, self.role, self.interpolation))
+            }
+        }
     }
 
     /// The exact integral of the spectrum over `[a, b]` nm (zero if `b ≤ a`).

@@ -121,7 +121,8 @@ impl Codegen {
         // The tables behind the static, public (a crate's own code may
         // read them in `const` context) but out of the documentation; data
         // such as 3.14 is not an approximation of π.
-        let h = "#[doc(hidden)]\n#[allow(clippy::approx_constant)]\npub const";
+        // A 1 nm table's are large: `const` all the same, for `const` readers.
+        let h = "#[doc(hidden)]\n#[allow(clippy::approx_constant, clippy::large_const_arrays)]\npub const";
         let _ = writeln!(out, "{h} {name}_LAMBDA: [f64; {n}] = {:?};", s.lambda);
         let _ = writeln!(out, "{h} {name}_VALUES: [f64; {n}] = {:?};", s.values);
         let _ = writeln!(out, "{h} {name}_COEFFS: [[f64; 4]; {}] = {coeffs:?};", n - 1);
@@ -139,12 +140,15 @@ impl Codegen {
         }
         let _ = writeln!(
             out,
-            "/// {role:?} spectrum from {origin:?}.\n\
+            "/// {role:?} spectrum from {origin:?}: {n} samples, {} to {} nm, zero outside\n\
+             /// (`TabulatedSpectrum::extended` holds its ends instead).\n\
              pub static {name}: {p}::TabulatedSpectrum = {p}::__codegen::tabulated(\n    \
              {p}::Role::{role:?},\n    {p}::Interpolation::{interpolation:?},\n    \
              {p}::__codegen::Tables {{ lambda: &{name}_LAMBDA, values: &{name}_VALUES, \
              coeffs: &{name}_COEFFS, breaks: &{name}_BREAKS, prefix: &{name}_PREFIX, clean: &{name}_CLEAN }},\n)\n\
-             .expect(\"speclab codegen: inconsistent tables for {name}\");"
+             .expect(\"speclab codegen: inconsistent tables for {name}\");",
+            s.lambda[0],
+            s.lambda[n - 1],
         );
     }
 }

@@ -71,7 +71,12 @@ fn per_sample_path_does_not_allocate() {
             pixel += h.to_xyz(l);
             h.terminate_secondary();
             pixel += h.to_xyz(le);
-            let own = HeroSample::from_wavelengths(*h.lambda(), [0.01; 4]).expect("valid");
+            let own = HeroSample::from_wavelengths_with(
+                *h.lambda(),
+                [0.01; 4],
+                &speclab::spectrum::DenseObserver::ASSIGNMENT,
+            )
+            .expect("valid");
             pixel += own.to_xyz(data::lights::A.sample(&own));
             pixel += (lb * sb).to_xyz();
         }
@@ -96,12 +101,24 @@ fn pdfs_do_not_allocate() {
         let mut pixel = speclab::Xyz::ZERO;
         for _ in 0..192 {
             let u = rng.random::<f64>();
-            let h = HeroSample::<4>::from_pdf(u, &light);
+            let h = HeroSample::<4>::from_pdf_with(u, &light, &speclab::spectrum::DenseObserver::ASSIGNMENT)
+                .unwrap();
             pixel += h.to_xyz(data::lights::F11.sample(&h) * data::patches::G4.sample(&h));
-            let h = HeroSample::<4>::from_pdf(u, &Visible::ASSIGNMENT);
+            let h = HeroSample::<4>::from_pdf_with(
+                u,
+                &Visible::ASSIGNMENT,
+                &speclab::spectrum::DenseObserver::ASSIGNMENT,
+            )
+            .unwrap();
             pixel += h.to_xyz(data::lights::A.sample(&h));
-            pixel += HeroSample::<1>::from_pdf(u, &balanced).to_xyz(SampledSpectrum::splat(1.0));
-            pixel += HeroSample::<4>::from_pdf(u, &binned).to_xyz(SampledSpectrum::splat(1.0));
+            pixel +=
+                HeroSample::<1>::from_pdf_with(u, &balanced, &speclab::spectrum::DenseObserver::ASSIGNMENT)
+                    .unwrap()
+                    .to_xyz(SampledSpectrum::splat(1.0));
+            pixel +=
+                HeroSample::<4>::from_pdf_with(u, &binned, &speclab::spectrum::DenseObserver::ASSIGNMENT)
+                    .unwrap()
+                    .to_xyz(SampledSpectrum::splat(1.0));
         }
         black_box(pixel);
     });

@@ -7,6 +7,7 @@ mod alloc;
 mod build_data;
 mod clients;
 mod doc_pages;
+mod domain;
 mod fuzz_body;
 mod fuzz_regressions;
 mod imports;

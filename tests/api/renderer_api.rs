@@ -152,8 +152,14 @@ fn an_observer_of_ones_own_keeps_the_pdf() {
         fn xyz_bar_at<const K: usize, T: Float>(&self, at: &impl Wavelengths<K, T>) -> [[T; 4]; K] {
             AssignmentObserver.xyz_bar_at(at).map(|[x, y, z, _]| [x, y, z, T::ZERO])
         }
+        fn data_range(&self) -> speclab::spectrum::WavelengthRange {
+            AssignmentObserver.data_range()
+        }
+        fn y_integral(&self, range: speclab::spectrum::WavelengthRange) -> f64 {
+            AssignmentObserver.y_integral(range)
+        }
     }
-    let mut own = HeroSample::<4>::with_observer(0.1, &ZeroFourth);
+    let mut own = HeroSample::<4>::with_observer(0.1, &ZeroFourth).unwrap();
     let exact = HeroSample::<4>::exact(0.1);
     assert_eq!(own.pdf(), exact.pdf());
     let v = data::lights::D65.sample(&own);
@@ -173,7 +179,12 @@ fn own_distribution_through_from_wavelengths_is_unbiased() {
     unbiased("ramp pdf", |l, s, rng| {
         let u: f64 = rng.random();
         let lambda: [f64; 4] = std::array::from_fn(|j| lambda_of((u + j as f64 / 4.0).fract()));
-        let h = HeroSample::from_wavelengths(lambda, lambda.map(pdf_of)).expect("valid");
+        let h = HeroSample::from_wavelengths_with(
+            lambda,
+            lambda.map(pdf_of),
+            &speclab::spectrum::DenseObserver::ASSIGNMENT,
+        )
+        .expect("valid");
         h.to_xyz(l.sample(&h) * s.sample(&h))
     });
 }
@@ -181,14 +192,29 @@ fn own_distribution_through_from_wavelengths_is_unbiased() {
 #[test]
 fn from_wavelengths_rejects_what_cannot_be_used() {
     assert!(
-        HeroSample::from_wavelengths([500.0, 600.0], [0.01, 0.0]).is_ok(),
+        HeroSample::from_wavelengths_with(
+            [500.0, 600.0],
+            [0.01, 0.0],
+            &speclab::spectrum::DenseObserver::ASSIGNMENT
+        )
+        .is_ok(),
         "pdf 0 marks a dropped wavelength"
     );
     for (lambda, pdf) in [(f64::NAN, 0.01), (500.0, -0.01), (500.0, f64::INFINITY), (f64::INFINITY, 0.01)] {
-        let err = HeroSample::from_wavelengths([400.0, lambda], [0.01, pdf]).unwrap_err();
+        let err = HeroSample::from_wavelengths_with(
+            [400.0, lambda],
+            [0.01, pdf],
+            &speclab::spectrum::DenseObserver::ASSIGNMENT,
+        )
+        .unwrap_err();
         assert!(matches!(err, Error::SampleWavelength { index: 1, .. }), "{err:?}");
     }
-    let dropped = HeroSample::from_wavelengths([500.0, 600.0], [0.0, 0.0]).expect("valid");
+    let dropped = HeroSample::from_wavelengths_with(
+        [500.0, 600.0],
+        [0.0, 0.0],
+        &speclab::spectrum::DenseObserver::ASSIGNMENT,
+    )
+    .expect("valid");
     assert_eq!(dropped.to_xyz(SampledSpectrum::splat(1.0)), Xyz::ZERO);
 }
 
@@ -200,7 +226,8 @@ fn luminance_alone_equals_to_xyz_y() {
     let pdf = speclab::sampling::pdf::LightPdf::light(&data::lights::F11).expect("bright");
     for i in 0..1000 {
         let u = f64::from(i) / 1000.0;
-        let mut drawn = HeroSample::<4>::from_pdf(u, &pdf);
+        let mut drawn =
+            HeroSample::<4>::from_pdf_with(u, &pdf, &speclab::spectrum::DenseObserver::ASSIGNMENT).unwrap();
         if i % 3 == 0 {
             drawn.terminate_secondary();
         }
@@ -215,10 +242,11 @@ fn luminance_alone_equals_to_xyz_y() {
     // Normalised by ∫ȳ, a constant spectrum's luminance is the constant,
     // on average (the exact observer's weights average to ∫ȳ).
     let n = 4096;
+    let domain = speclab::sampling::Domain::ASSIGNMENT_EXACT;
     let mean: f64 = (0..n)
         .map(|i| {
-            let h = HeroSample::<4>::exact((f64::from(i) + 0.5) / f64::from(n));
-            h.luminance(SampledSpectrum::splat(2.5))
+            let h = domain.hero::<4, f64>((f64::from(i) + 0.5) / f64::from(n));
+            domain.luminance(&h, SampledSpectrum::splat(2.5))
         })
         .sum::<f64>()
         / f64::from(n);
@@ -274,12 +302,20 @@ fn safe_division() {
 #[test]
 fn pdf_round_trip() {
     let pdf = [0.004_f64, 1e-3, 0.0, 0.0123];
-    let h = HeroSample::from_wavelengths([400.0, 500.0, 600.0, 700.0], pdf).expect("valid");
+    let h = HeroSample::from_wavelengths_with(
+        [400.0, 500.0, 600.0, 700.0],
+        pdf,
+        &speclab::spectrum::DenseObserver::ASSIGNMENT,
+    )
+    .expect("valid");
     for (got, want) in h.pdf().iter().zip(pdf) {
         assert!((got - want).abs() <= 1e-15 * want, "{got} vs {want}");
     }
     assert_eq!(h.inv_pdf()[2], 0.0);
-    assert!(HeroSample::from_wavelengths([400.0], [1e-310]).is_err());
+    assert!(
+        HeroSample::from_wavelengths_with([400.0], [1e-310], &speclab::spectrum::DenseObserver::ASSIGNMENT)
+            .is_err()
+    );
     assert_eq!(HeroSample::<2>::new(0.25).pdf(), [1.0 / LAMBDA_WIDTH; 2]);
 }
 

@@ -19,7 +19,7 @@ fn y_sum<const M: usize, T: Float>(at: &FixedWavelengths<M, T>) -> f64 {
 /// `observer` (n·K equidistant wavelengths: a midpoint sum).
 fn drawn_mean(n: u32, observer: &impl Observer) -> f64 {
     let sum: f64 = (0..n)
-        .map(|i| HeroSample::<4>::with_observer((f64::from(i) + 0.5) / f64::from(n), observer))
+        .map(|i| HeroSample::<4>::with_observer((f64::from(i) + 0.5) / f64::from(n), observer).unwrap())
         .map(|h| h.y(SampledSpectrum::splat(1.0)))
         .sum();
     sum / f64::from(n)
@@ -84,16 +84,22 @@ fn fitted_weights_reproduce_the_light_not_the_observer() {
     assert!((sum - 77.4).abs() < 1.0, "snapshot: {sum}");
 }
 
-/// `luminance` is `y / ∫ȳ` in the wavelengths' precision: a constant
-/// comes out as itself over box buckets, and on average over draws.
+/// Fixed wavelengths' `luminance` is `y` over their own white, in their
+/// precision: a constant comes out as itself over box and centre
+/// buckets; a domain's is `y / ∫ȳ` for drawn ones.
 #[test]
 fn luminance_is_y_over_the_integral_in_its_own_precision() {
-    let boxes = <BoxAverage as Bucketing<16>>::wavelengths::<f32>();
     let constant = SampledSpectrum::<16, f32>::splat(2.5);
-    let l: f32 = boxes.luminance(constant);
-    assert!((l - 2.5).abs() < 1e-5, "{l}");
-    let h = HeroSample::<4, f32>::new(0.3);
+    for fixed in
+        [<BoxAverage as Bucketing<16>>::wavelengths::<f32>(), <Center as Bucketing<16>>::wavelengths::<f32>()]
+    {
+        let l: f32 = fixed.luminance(constant);
+        assert!((l - 2.5).abs() < 1e-5, "{l}");
+    }
+    let domain = speclab::sampling::Domain::ASSIGNMENT;
+    let h = domain.hero::<4, f32>(0.3);
     let v = SampledSpectrum::new([0.2_f32, 0.4, 0.6, 0.8]);
-    let expected = h.y(v) / Y_BAR_INTEGRAL as f32;
-    assert!((h.luminance(v) - expected).abs() <= 1e-6 * expected);
+    let expected = h.y(v) / domain.y_integral() as f32;
+    assert!((domain.luminance(&h, v) - expected).abs() <= 1e-6 * expected);
+    assert!((domain.y_integral() / Y_BAR_INTEGRAL - 1.0).abs() < 1e-6);
 }

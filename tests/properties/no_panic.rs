@@ -92,7 +92,7 @@ proptest! {
         let mut wavelengths = lambda.clone();
         wavelengths.resize(4, 500.0);
         let four = |v: &[f64]| [v[0], v[1], v[2], v[3]];
-        if let Ok(h) = HeroSample::from_wavelengths(four(&wavelengths), four(&pdf)) {
+        if let Ok(h) = HeroSample::from_wavelengths_with(four(&wavelengths), four(&pdf), &speclab::spectrum::DenseObserver::ASSIGNMENT) {
             prop_assert!(h.to_xyz(data::lights::D65.sample(&h)).y.is_finite());
         }
     }
@@ -144,7 +144,8 @@ proptest! {
             prop_assert!((380.0..=730.0).contains(&l), "{}", l);
             let (d, c) = (p.pdf(lambda), p.cdf(lambda).expect("the library's pdfs know their CDF"));
             prop_assert!(d.is_finite() && d >= 0.0 && (0.0..=1.0).contains(&c), "{} {}", d, c);
-            prop_assert!(HeroSample::<4>::from_pdf(u, p).to_xyz(data::lights::D65.sample(&HeroSample::<4>::new(u))).is_finite());
+            let h = HeroSample::<4>::from_pdf_with(u, p, &speclab::spectrum::DenseObserver::ASSIGNMENT).expect("within 380–780 nm");
+            prop_assert!(h.to_xyz(data::lights::D65.sample(&HeroSample::<4>::new(u))).is_finite());
         }
     }
 

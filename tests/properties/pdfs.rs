@@ -107,7 +107,12 @@ fn zero_regions_are_never_drawn() {
     let mut rng = StdRng::seed_from_u64(3);
     for p in [LightPdf::light(&lamp).expect("bright"), LightPdf::balanced(&lamp).expect("bright")] {
         for _ in 0..20_000 {
-            let h = HeroSample::<4>::from_pdf(rng.random(), &p);
+            let h = HeroSample::<4>::from_pdf_with(
+                rng.random(),
+                &p,
+                &speclab::spectrum::DenseObserver::ASSIGNMENT,
+            )
+            .unwrap();
             for (&lambda, w) in h.lambda().iter().zip(h.inv_pdf()) {
                 assert!(lambda > 500.0 && p.pdf(lambda) > 0.0, "drew {lambda} nm, density {}", p.pdf(lambda));
                 assert!(w.is_finite() && w > 0.0);
@@ -180,10 +185,10 @@ fn spread_matches_exact_variance() {
                     .map(|_| {
                         let u: f64 = rng.random();
                         if k == 1 {
-                            let h = HeroSample::<1>::from_pdf_with(u, p, &AssignmentObserver);
+                            let h = HeroSample::<1>::from_pdf_with(u, p, &AssignmentObserver).unwrap();
                             h.to_xyz(l.sample(&h) * s.sample(&h))
                         } else {
-                            let h = HeroSample::<4>::from_pdf_with(u, p, &AssignmentObserver);
+                            let h = HeroSample::<4>::from_pdf_with(u, p, &AssignmentObserver).unwrap();
                             h.to_xyz(l.sample(&h) * s.sample(&h))
                         }
                     })

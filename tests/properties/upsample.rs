@@ -242,9 +242,15 @@ fn every_spaces_table_round_trips_on_a_grid() {
     // `compact_tables` holds each against its f32 source). The gaps where
     // no reflectance exists are the compact tables' (regression snapshot;
     // the f32 tables' were 0, 0.1137, 0.1923, 1.1859, 0.2780).
+    // Display P3: the tables were fitted under D65 at 5 nm, the fit here
+    // runs under D65 at 1 nm (the same to 6 significant figures), and at
+    // (0.375, 1, 0), on the object colours' limit, the fit alone now lands
+    // (ΔE00 0.0000; 0.0178 under the 5 nm table): that colour counts as
+    // reachable, and the table's 0.1326 there (0.1315 before) is P3's
+    // worst; the largest gap left is 0.0786 (snapshots).
     let bounds = [
         ("sRGB", 0.037, 0.001),
-        ("Display P3", 0.042, 0.116),
+        ("Display P3", 0.133, 0.079),
         ("Rec.2020", 0.33, 0.194),
         ("ACES2065-1", 0.363, 1.188),
         ("ACEScg", 0.73, 0.280),

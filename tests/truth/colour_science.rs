@@ -209,7 +209,8 @@ fn astm_e308_weighting_tables() {
         let c2: f64 = 1.435e7;
         100.0 * (560.0 / l).powi(5) * ((c2 / (2848.0 * 560.0)).exp_m1() / (c2 / (2848.0 * l)).exp_m1())
     });
-    let d65 = FnSpectrum(|l: f64| lights::CIE_D65.eval(l.min(780.0)));
+    let d65_5nm = crate::cie_5nm(&lights::CIE_D65);
+    let d65 = FnSpectrum(|l: f64| d65_5nm.eval(l.min(780.0)));
     let three_decimals = |w: &Weights, expected: &[[f64; 3]], what: &str| {
         assert_eq!(w.rows().len(), expected.len(), "{what}");
         for (row, e) in w.rows().iter().zip(expected) {

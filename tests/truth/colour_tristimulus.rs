@@ -76,7 +76,8 @@ fn a_formula() -> impl Spectrum {
 #[test]
 fn integration() {
     let c = illuminant_c();
-    let (sd, a, c, fl2) = (sample(), held(&lights::CIE_A), held(&c), held(&lights::F2));
+    let a_5nm = crate::cie_5nm(&lights::CIE_A);
+    let (sd, a, c, fl2) = (sample(), held(&a_5nm), held(&c), held(&lights::F2));
     let (t1931, t1964) = (Tristimulus::CIE_1931, Tristimulus::CIE_1964);
     allclose(t1931.relative(&a, &sd).unwrap(), [14.46341147, 10.85819624, 2.04695585], "A, 2°");
     allclose(t1964.relative(&c, &sd).unwrap(), [10.77002699, 9.44876636, 6.62415290], "C, 10°");
@@ -94,7 +95,8 @@ fn integration() {
 #[test]
 fn weighting_factors() {
     let c = illuminant_c();
-    let (a, c, fl2) = (held(&lights::CIE_A), held(&c), held(&lights::F2));
+    let a_5nm = crate::cie_5nm(&lights::CIE_A);
+    let (a, c, fl2) = (held(&a_5nm), held(&c), held(&lights::F2));
     let (o1931, o1964) = (StandardObserver::Cie1931, StandardObserver::Cie1964);
     let w = Practice::WEIGHTS;
     let sd = measured(340.0, 830.0, 5.0);

@@ -7,7 +7,8 @@
 //! project against both sources): both are rows of
 //! `StandardObserver::Cie1931`'s table here.
 
-use speclab::spectrum::{StandardObserver, WavelengthRange};
+use speclab::sampling::Domain;
+use speclab::spectrum::{Constant, StandardObserver, WavelengthRange};
 
 fn y_rows() -> Vec<f64> {
     let (first, step, rows) = StandardObserver::Cie1931.table().expect("a 1 nm table");
@@ -31,6 +32,14 @@ fn pbrt_v4s_y_integral() {
     // The exact integral of the table's lines (trapezoids) over the range.
     let exact = StandardObserver::Cie1931.y_integral(WavelengthRange::VISIBLE).unwrap();
     assert!((exact / 106.856_895 - 1.0).abs() < 1e-6, "{exact}");
+    // The renderer's defaults reach it with no range or observer named:
+    // Domain::VISIBLE's `const` ∫ȳ is that integral, and so is the Y of a
+    // constant 1 integrated exactly over its range.
+    const DEFAULT: f64 = Domain::VISIBLE.y_integral();
+    assert!((DEFAULT / exact - 1.0).abs() < 1e-15, "{DEFAULT} vs {exact}");
+    let one = Domain::VISIBLE.reference(&[&Constant::new(1.0)]).unwrap();
+    assert!((one.y / 106.856_895 - 1.0).abs() < 1e-6, "{one:?}");
+    assert!((Domain::VISIBLE.normalized(one).y - 1.0).abs() < 1e-12);
 }
 
 /// Mitsuba 3: a 1000-point Riemann sum over 360–830 nm of its 5 nm table,
@@ -54,4 +63,10 @@ fn mitsuba_3s_y_normalisation() {
     let published = 106.750_26_f32;
     assert_eq!(f64::from(published), 106.750_259_399_414_06); // 106.7502593994140625
     assert_eq!(normalisation.to_bits() + 1, published.to_bits(), "{normalisation}: one f32 step below");
+    // Its 1000 points span 360–830 nm in 999 steps of 470/999 nm but are
+    // weighed 470/1000 nm each: the constant is 999/1000 of the integral,
+    // which the renderer's default domain holds (within 2e-6).
+    let integral = f64::from(published) * 1000.0 / 999.0;
+    let default = Domain::VISIBLE.y_integral();
+    assert!((integral / default - 1.0).abs() < 2e-6, "{integral} vs {default}");
 }

@@ -27,7 +27,8 @@ fn samples<T: Float>() -> Vec<(HeroSample<4, T>, SampledSpectrum<4, T>)> {
     (0..1024)
         .map(|i| {
             let u = T::from_f64((i as f64 * 0.618_033_988_749_895).fract());
-            let h = HeroSample::<4, T>::from_pdf_with(u, &Uniform::ASSIGNMENT, &DenseObserver::CIE_1931);
+            let h = HeroSample::<4, T>::from_pdf_with(u, &Uniform::ASSIGNMENT, &DenseObserver::CIE_1931)
+                .expect("the CIE observer covers 380–730 nm");
             (h, light.sample(&h) * surface.sample(&h))
         })
         .collect()

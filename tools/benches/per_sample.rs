@@ -15,8 +15,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use speclab::sampling::Domain;
 use speclab::sampling::reference;
-use speclab::spectrum::DenseSpectrum;
+use speclab::spectrum::{DenseObserver, DenseSpectrum};
 use speclab::{BoxAverage, Center, HeroSample, RegularSpectrum, SampledSpectrum, data};
 
 /// A fixed low-discrepancy sequence of u, so every run draws the same.
@@ -110,25 +111,23 @@ fn drawing(c: &mut Criterion) {
     group.bench_function("HeroSample::exact (uniform, exact observer)", |b| {
         b.iter(|| HeroSample::<4>::exact(black_box(next_u())))
     });
-    group.bench_function("from_pdf Uniform", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Uniform::ASSIGNMENT))
-    });
-    group.bench_function("from_pdf Visible", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &Visible::ASSIGNMENT))
-    });
-    group.bench_function("from_pdf BinnedPdf of Visible", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &binned_visible))
-    });
-    group.bench_function("from_pdf LightPdf F11 (exact)", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &light))
-    });
-    group.bench_function("from_pdf BinnedPdf of LightPdf F11", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), &binned_light))
-    });
+    // Each density with the observer, checked once (a Domain).
+    let dense = DenseObserver::ASSIGNMENT;
+    let within = "within the observer";
     let dynamic: &dyn WavelengthPdf = &binned_light;
-    group.bench_function("from_pdf BinnedPdf F11 via &dyn", |b| {
-        b.iter(|| HeroSample::<4>::from_pdf(black_box(next_u()), black_box(dynamic)))
-    });
+    let domains: [(&str, Domain<&dyn WavelengthPdf>); 6] = [
+        ("Uniform", Domain::new(&Uniform::ASSIGNMENT as &dyn WavelengthPdf, dense).expect(within)),
+        ("Visible", Domain::new(&Visible::ASSIGNMENT as &dyn WavelengthPdf, dense).expect(within)),
+        ("BinnedPdf of Visible", Domain::new(&binned_visible as &dyn WavelengthPdf, dense).expect(within)),
+        ("LightPdf F11 (exact)", Domain::new(&light as &dyn WavelengthPdf, dense).expect(within)),
+        ("BinnedPdf of LightPdf F11", Domain::new(&binned_light as &dyn WavelengthPdf, dense).expect(within)),
+        ("BinnedPdf F11 via &dyn", Domain::new(black_box(dynamic), dense).expect(within)),
+    ];
+    for (name, domain) in &domains {
+        group.bench_function(format!("Domain::hero {name}"), |b| {
+            b.iter(|| domain.hero::<4, f64>(black_box(next_u())))
+        });
+    }
     group.finish();
 }
 
@@ -163,7 +162,13 @@ fn path_tracer_ops(c: &mut Criterion) {
     let h = HeroSample::<4>::new(0.3);
     let (le, albedo) = (data::lights::F11.sample(&h), data::patches::H4.sample(&h));
     group.bench_function("HeroSample::from_wavelengths", |b| {
-        b.iter(|| HeroSample::from_wavelengths(black_box(*h.lambda()), black_box(h.pdf())))
+        b.iter(|| {
+            HeroSample::from_wavelengths_with(
+                black_box(*h.lambda()),
+                black_box(h.pdf()),
+                &DenseObserver::ASSIGNMENT,
+            )
+        })
     });
     group.bench_function("terminate_secondary", |b| {
         b.iter(|| {
@@ -249,10 +254,11 @@ fn same_light_three_ways(c: &mut Criterion) {
             b.iter(|| LightPdf::light(black_box(light)))
         });
         let pdf = LightPdf::light(light).expect("bright");
+        let domain = Domain::new(&pdf, DenseObserver::ASSIGNMENT).expect("within the observer");
         let mut next_u = sequence();
         group.bench_function(format!("hero K=4 from the light pdf {name}"), |b| {
             b.iter(|| {
-                let h = HeroSample::<4>::from_pdf(black_box(next_u()), &pdf);
+                let h = domain.hero::<4, f64>(black_box(next_u()));
                 h.to_xyz(light.sample(&h) * data::patches::H4.sample(&h))
             })
         });

@@ -5,6 +5,13 @@
 //! same way.
 
 use super::{RgbTable, TileCache};
+use crate::spectrum::data::lights;
+
+/// `∫ D65·ȳ` over 380–730 nm (the CIE's 1 nm D65, read as lines, and the
+/// assignment's observer, exactly): what the D65 spaces' lights are
+/// normalised by, as their fits compute it at run time (a test holds the
+/// two equal to the bit; it is a `const` here so that lights can be).
+pub(crate) const D65_WHITE_Y: f64 = 10566.542938675018;
 
 /// sRGB's compact table file, once in the program (a static array: a
 /// `const`, or a static reference to the bytes, could be copied into every
@@ -25,14 +32,17 @@ static ACESCG_TILES: TileCache = TileCache::new();
 impl RgbTable {
     /// Linear sRGB's table ([`RgbSpace::srgb`](crate::color::RgbSpace::srgb)'s), embedded at build time
     /// (`data/rgb/srgb.rgbt`, 1.5 MB).
-    pub const SRGB: &RgbTable = &RgbTable::embedded(&SRGB_FILE, &SRGB_TILES);
+    pub const SRGB: &RgbTable =
+        &RgbTable::embedded(&SRGB_FILE, &SRGB_TILES).lit(&lights::CIE_D65, D65_WHITE_Y);
     /// Display P3's table ([`RgbSpace::display_p3`](crate::color::RgbSpace::display_p3)'s), from
     /// `speclab-wide-gamut` (feature `wide-gamut`, on by default).
     #[cfg(feature = "wide-gamut")]
-    pub const DISPLAY_P3: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::DISPLAY_P3, &DISPLAY_P3_TILES);
+    pub const DISPLAY_P3: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::DISPLAY_P3, &DISPLAY_P3_TILES)
+        .lit(&lights::CIE_D65, D65_WHITE_Y);
     /// Rec.2020's table ([`RgbSpace::rec2020`](crate::color::RgbSpace::rec2020)'s), as [`RgbTable::DISPLAY_P3`].
     #[cfg(feature = "wide-gamut")]
-    pub const REC2020: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::REC2020, &REC2020_TILES);
+    pub const REC2020: &RgbTable =
+        &RgbTable::embedded(&speclab_wide_gamut::REC2020, &REC2020_TILES).lit(&lights::CIE_D65, D65_WHITE_Y);
     /// ACES2065-1's table ([`RgbSpace::aces2065_1`](crate::color::RgbSpace::aces2065_1)'s), as [`RgbTable::DISPLAY_P3`].
     #[cfg(feature = "wide-gamut")]
     pub const ACES2065_1: &RgbTable = &RgbTable::embedded(&speclab_wide_gamut::ACES2065_1, &ACES2065_1_TILES);

@@ -40,6 +40,7 @@
 //! ```
 
 mod builtin;
+mod consts;
 pub(crate) use builtin::BuiltInTable;
 mod fit;
 mod lookup;
@@ -75,6 +76,9 @@ pub struct RgbTable {
     source: Source,
     /// Nodes per axis, the nodes, and how a colour finds its place.
     grid: lookup::Grid,
+    /// The illuminant a built-in table's lights tint and its `∫ L·ȳ`, for
+    /// [`RgbTable::const_light`].
+    light: Option<(&'static crate::TabulatedSpectrum, f64)>,
 }
 
 /// Where the bytes and their tiles live: the program's static data, or
@@ -101,12 +105,16 @@ impl RgbTable {
         } else {
             n
         };
-        RgbTable { source: Source::Static { bytes, tiles }, grid: lookup::Grid::new(n) }
+        RgbTable { source: Source::Static { bytes, tiles }, grid: lookup::Grid::new(n), light: None }
     }
 
     /// The table of a checked file's `bytes` on the heap.
     fn shared(bytes: Box<[u8]>, n: usize) -> RgbTable {
-        RgbTable { source: Source::Shared(Arc::new((bytes, TileCache::new()))), grid: lookup::Grid::new(n) }
+        RgbTable {
+            source: Source::Shared(Arc::new((bytes, TileCache::new()))),
+            grid: lookup::Grid::new(n),
+            light: None,
+        }
     }
 
     /// A table fitted by `fit` for the space named `name`, `n` nodes per
@@ -253,34 +261,6 @@ impl RgbTable {
     #[inline]
     pub fn albedo(&self, rgb: impl Into<LinearRgb>) -> Result<RgbAlbedo, Error> {
         Ok(RgbAlbedo::from_polynomial(self.lookup(albedo_components(rgb.into())?)))
-    }
-
-    /// [`RgbTable::albedo`] at compile time, for a table embedded in the
-    /// program ([`RgbTable::SRGB`] and its siblings, [`crate::rgb_table!`]):
-    /// `None` for a component outside [0, 1], or for a table loaded or
-    /// fitted at run time. The same coefficients as at run time, to the
-    /// bit; the colour's corners decoded at compile time (a few hundred
-    /// thousand steps of the compiler's evaluation: one colour per `const`).
-    #[must_use]
-    pub const fn const_albedo(&self, rgb: LinearRgb) -> Option<RgbAlbedo> {
-        let Source::Static { bytes, .. } = &self.source else { return None };
-        let rgb = rgb.to_array();
-        let mut i = 0;
-        while i < 3 {
-            if !(rgb[i] >= 0.0 && rgb[i] <= 1.0) {
-                return None;
-            }
-            i += 1;
-        }
-        let poly = if rgb[0] == rgb[1] && rgb[1] == rgb[2] {
-            constant(rgb[0])
-        } else if let Some(place) = self.grid.locate([rgb[0] as f32, rgb[1] as f32, rgb[2] as f32]) {
-            let c = self.grid.interpolate(bytes, place);
-            SigmoidPolynomial::new([c[0] as f64, c[1] as f64, c[2] as f64])
-        } else {
-            SigmoidPolynomial::BLACK
-        };
-        Some(RgbAlbedo::from_polynomial(poly))
     }
 
     /// `rgb` (negatives and NaN as 0) as `(scale, polynomial)`: the scale

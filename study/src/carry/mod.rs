@@ -33,7 +33,7 @@
 //! }
 //! let (light, surface) = (&lights::F11, &patches::G4);
 //! let exact = reference::xyz(light, surface);
-//! let hero = Hero::new(vec![light], vec![surface], DenseObserver::new(), Uniform::ASSIGNMENT);
+//! let hero = Hero::new(vec![light], vec![surface], DenseObserver::new(), Uniform::ASSIGNMENT)?;
 //! let mean = (0..256).map(|i| one_bounce(&hero, (i as f64 + 0.5) / 256.0)).sum::<speclab::Xyz>() / 256.0;
 //! let fitted = Fitted::<12, f32>::new(&Rule::fit_each(&[light], 10)?, &[light], &[surface])?;
 //! let rgb = Rgb::new(&[light], &[surface]);

@@ -10,7 +10,7 @@ use speclab::error::Error;
 use speclab::sampling::pdf::WavelengthPdf;
 use speclab::sampling::reference;
 use speclab::sampling::rule::Rule;
-use speclab::sampling::{Emission, FixedWavelengths, HeroSample};
+use speclab::sampling::{Domain, Emission, FixedWavelengths, HeroSample};
 use speclab::spectrum::observer::Y_BAR_INTEGRAL;
 use speclab::spectrum::{Float, Observer, SampledSpectrum, Spectrum};
 
@@ -23,18 +23,18 @@ pub struct Hero<L, S, O, P, T = f64> {
     pub lights: Vec<L>,
     /// The surfaces' albedos, numbered in order.
     pub surfaces: Vec<S>,
-    /// The observer the weights come from (`DenseObserver` for the fast
-    /// path, `AssignmentObserver` for the exact one).
-    pub observer: O,
-    /// The density the wavelengths are drawn from.
-    pub pdf: P,
+    /// The density the wavelengths are drawn from and the observer the
+    /// weights come from (`DenseObserver` for the fast path,
+    /// `AssignmentObserver` for the exact one), checked together.
+    pub domain: Domain<P, O>,
     precision: PhantomData<T>,
 }
 
-impl<L, S, O, P> Hero<L, S, O, P, f64> {
-    /// Hero wavelengths from `pdf`, weighted by `observer`, in `f64`.
-    pub fn new(lights: Vec<L>, surfaces: Vec<S>, observer: O, pdf: P) -> Self {
-        Hero { lights, surfaces, observer, pdf, precision: PhantomData }
+impl<L, S, O: Observer, P: WavelengthPdf> Hero<L, S, O, P, f64> {
+    /// Hero wavelengths from `pdf`, weighted by `observer`, in `f64`; an
+    /// error if the pdf draws where the observer has no data.
+    pub fn new(lights: Vec<L>, surfaces: Vec<S>, observer: O, pdf: P) -> Result<Self, Error> {
+        Ok(Hero { lights, surfaces, domain: Domain::new(pdf, observer)?, precision: PhantomData })
     }
 }
 
@@ -43,8 +43,8 @@ impl<L, S, O, P, T> Hero<L, S, O, P, T> {
     /// renderer computing in single precision).
     #[must_use]
     pub fn precision<U: Float>(self) -> Hero<L, S, O, P, U> {
-        let Hero { lights, surfaces, observer, pdf, .. } = self;
-        Hero { lights, surfaces, observer, pdf, precision: PhantomData }
+        let Hero { lights, surfaces, domain, .. } = self;
+        Hero { lights, surfaces, domain, precision: PhantomData }
     }
 }
 
@@ -55,7 +55,7 @@ impl<L: Spectrum, S: Spectrum, O: Observer, P: WavelengthPdf, T: Float> Carry fo
 
     #[inline]
     fn path(&self, u: f64) -> Self::Path {
-        HeroSample::from_pdf_with(T::from_f64(u), &self.pdf, &self.observer)
+        self.domain.hero_by_cdf(T::from_f64(u))
     }
 
     fn one(&self) -> Self::Value {

@@ -57,7 +57,7 @@ pub fn spectral(
         return Err(Error::Count { what: "lights for a reflective film", found, min: 1, max: 1 }.into());
     }
     let pdf = wavelength_pdf(o, setup)?;
-    let carry = hero::<_, _, f64>(setup, setup.light_spectra(), setup.patches.clone(), sensor.clone(), pdf);
+    let carry = hero::<_, _, f64>(setup, setup.light_spectra(), setup.patches.clone(), sensor.clone(), pdf)?;
     let mut film = SpectralFilm::new((o.width, o.height), buckets, kind)?;
     let mut xyz = vec![Xyz::ZERO; o.width * o.height];
     let start = Instant::now();

@@ -79,28 +79,29 @@ pub fn with_carry<W: WithCarry>(o: &Options, setup: &Setup, with: W) -> Result<W
                 })?;
                 let l: Vec<DenseSpectrum> = lights.iter().map(DenseSpectrum::new).collect();
                 let s = textured::<DenseSpectrum>(setup, space, o.rgb_converted);
+                let hero = Hero::new(l, s, DenseObserver::new(), pdf)?;
                 return Ok(if o.single {
-                    with.go(&Hero::new(l, s, DenseObserver::new(), pdf).precision::<f32>())
+                    with.go(&hero.precision::<f32>())
                 } else {
-                    with.go(&Hero::new(l, s, DenseObserver::new(), pdf).precision::<f64>())
+                    with.go(&hero.precision::<f64>())
                 });
             }
             Ok(match (o.dense, o.single) {
                 (false, false) => {
-                    with.go(&hero::<_, _, f64>(setup, lights, patches.clone(), AssignmentObserver, pdf))
+                    with.go(&hero::<_, _, f64>(setup, lights, patches.clone(), AssignmentObserver, pdf)?)
                 }
                 (false, true) => {
-                    with.go(&hero::<_, _, f32>(setup, lights, patches.clone(), AssignmentObserver, pdf))
+                    with.go(&hero::<_, _, f32>(setup, lights, patches.clone(), AssignmentObserver, pdf)?)
                 }
                 (true, false) => {
                     let dense = |s: &TabulatedSpectrum| DenseSpectrum::new(s);
                     let (l, p) = (lights.iter().map(dense).collect(), patches.iter().map(dense).collect());
-                    with.go(&hero::<_, _, f64>(setup, l, p, DenseObserver::new(), pdf))
+                    with.go(&hero::<_, _, f64>(setup, l, p, DenseObserver::new(), pdf)?)
                 }
                 (true, true) => {
                     let dense = |s: &TabulatedSpectrum| DenseSpectrum::new(s);
                     let (l, p) = (lights.iter().map(dense).collect(), patches.iter().map(dense).collect());
-                    with.go(&hero::<_, _, f32>(setup, l, p, DenseObserver::new(), pdf))
+                    with.go(&hero::<_, _, f32>(setup, l, p, DenseObserver::new(), pdf)?)
                 }
             })
         }
@@ -122,17 +123,21 @@ pub fn textured<S>(setup: &Setup, space: &'static RgbSpace, converted: bool) -> 
     patches.chain(texels).map(albedo).collect()
 }
 
-/// Hero over these lights and patches (the texels after them), in `T`.
+/// The hero way over the scene's spectra, a boxed pdf and observer `O`.
+pub type SceneHero<S, O, T> = Hero<S, Albedo<S>, O, Box<dyn WavelengthPdf + Sync>, T>;
+
+/// Hero over these lights and patches (the texels after them), in `T`;
+/// an error if the pdf draws where the observer has no data.
 pub fn hero<S: Spectrum, O: Observer, T: Float>(
     setup: &Setup,
     lights: Vec<S>,
     patches: Vec<S>,
     observer: O,
     pdf: Box<dyn WavelengthPdf + Sync>,
-) -> Hero<S, Albedo<S>, O, Box<dyn WavelengthPdf + Sync>, T> {
+) -> Result<SceneHero<S, O, T>, speclab::Error> {
     let mut surfaces: Vec<Albedo<S>> = patches.into_iter().map(Albedo::Measured).collect();
     surfaces.extend(setup.texture.iter().cloned().map(Albedo::Texel));
-    Hero::new(lights, surfaces, observer, pdf).precision::<T>()
+    Ok(Hero::new(lights, surfaces, observer, pdf)?.precision::<T>())
 }
 
 /// The fitted rules at the compiled width that holds them, in `f32` or

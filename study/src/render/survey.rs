@@ -169,7 +169,7 @@ pub fn survey(
                 setup.patches.clone(),
                 AssignmentObserver,
                 density,
-            );
+            )?;
             push(format!("hero {pdf}/jitter"), spp, measure(spp).go(&carry));
         }
     }

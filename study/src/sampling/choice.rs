@@ -14,7 +14,7 @@
 //! assert_eq!("balanced".parse::<PdfKind>()?, PdfKind::Balanced);
 //! let f11 = s.pdf.for_light(&lights::F11)?;
 //! assert!(f11.pdf(545.0) > f11.pdf(500.0)); // F11's line at 545 nm
-//! let h = HeroSample::<4>::from_pdf(0.3, &f11);
+//! let h = HeroSample::<4>::from_pdf_with(0.3, &f11, &speclab::spectrum::DenseObserver::ASSIGNMENT).unwrap();
 //! assert!(h.pdf().iter().all(|&p| p > 0.0));
 //! # Ok::<(), speclab::Error>(())
 //! ```
@@ -89,6 +89,13 @@ impl WavelengthPdf for ChosenPdf {
             ChosenPdf::Uniform => Uniform::ASSIGNMENT.pdf(lambda),
             ChosenPdf::Visible => Visible::ASSIGNMENT.pdf(lambda),
             ChosenPdf::Table(t) => t.pdf(lambda),
+        }
+    }
+
+    fn support(&self) -> speclab::spectrum::WavelengthRange {
+        match self {
+            ChosenPdf::Uniform | ChosenPdf::Visible => speclab::spectrum::WavelengthRange::ASSIGNMENT,
+            ChosenPdf::Table(t) => t.support(),
         }
     }
 

@@ -2,7 +2,7 @@
 //! times a surface, wavelengths drawn from a pdf with their primary numbers
 //! spread by a [`Strata`], at a hero width fixed at compile time
 //! ([`estimate_with`]) or chosen at run time ([`estimate_width`]). Each
-//! sample is the core's [`HeroSample`] with the exact observer
+//! sample is the core's [`HeroSample`](speclab::HeroSample) with the exact observer
 //! ([`AssignmentObserver`]), so the means are unbiased for the exact integrals they
 //! are judged by.
 //!
@@ -18,9 +18,9 @@
 use std::num::NonZeroUsize;
 
 use rand::Rng;
-use speclab::sampling::HeroSample;
-use speclab::sampling::pdf::{Uniform, WavelengthPdf};
-use speclab::spectrum::observer::{self, AssignmentObserver};
+use speclab::sampling::Domain;
+use speclab::sampling::pdf::WavelengthPdf;
+use speclab::spectrum::observer::{self, AssignmentObserver, Observer};
 use speclab::{Error, Spectrum, Xyz};
 
 use crate::sampling::strata::Strata;
@@ -43,13 +43,12 @@ pub fn estimate<const K: usize, R: Rng + ?Sized>(
     n: NonZeroUsize,
     rng: &mut R,
 ) -> Xyz {
-    estimate_with::<K, _, R>(light, surface, n, &Uniform::ASSIGNMENT, Strata::None, rng)
+    estimate_in::<K, _, _, R>(light, surface, n, &Domain::ASSIGNMENT_EXACT, Strata::None, rng)
 }
 
 /// [`estimate`] with wavelengths drawn from `pdf` and the n primary numbers
 /// spread by `strata`: unbiased for every pdf that is positive wherever
 /// `light × surface` is, and every strata.
-#[must_use]
 pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
     light: &impl Spectrum,
     surface: &impl Spectrum,
@@ -57,11 +56,24 @@ pub fn estimate_with<const K: usize, P: WavelengthPdf + ?Sized, R: Rng + ?Sized>
     pdf: &P,
     strata: Strata,
     rng: &mut R,
+) -> Result<Xyz, Error> {
+    let domain = Domain::new(pdf, AssignmentObserver)?;
+    Ok(estimate_in::<K, _, _, R>(light, surface, n, &domain, strata, rng))
+}
+
+/// [`estimate_with`] in a domain checked once (its density and observer).
+pub fn estimate_in<const K: usize, P: WavelengthPdf, O: Observer, R: Rng + ?Sized>(
+    light: &impl Spectrum,
+    surface: &impl Spectrum,
+    n: NonZeroUsize,
+    domain: &Domain<P, O>,
+    strata: Strata,
+    rng: &mut R,
 ) -> Xyz {
     let sum: Xyz = strata
         .points(n.get(), K, rng)
         .map(|u| {
-            let h = HeroSample::<K>::from_pdf_with(u, pdf, &AssignmentObserver);
+            let h = domain.hero_by_cdf::<K, f64>(u);
             h.to_xyz(light.sample(&h) * surface.sample(&h))
         })
         .sum();
@@ -113,7 +125,7 @@ pub fn estimate_width<P: WavelengthPdf + ?Sized, R: Rng + ?Sized>(
 }
 
 /// Rotation `j` of `k` from `u ∈ [0, 1)`: `(u + j/k) mod 1`, as
-/// [`HeroSample::from_pdf`] rotates.
+/// [`HeroSample::from_pdf_with`] rotates.
 fn rotation(u: f64, j: usize, k: usize) -> f64 {
     let v = u + j as f64 / k as f64;
     if v >= 1.0 { v - 1.0 } else { v }
@@ -142,6 +154,7 @@ mod tests {
     use super::*;
     use rand::SeedableRng;
     use speclab::data::{lights, patches};
+    use speclab::sampling::pdf::Uniform;
 
     /// A width chosen at run time gives the compile-time width's estimate
     /// from the same draws (to rounding: another order of the sums), under
@@ -157,8 +170,8 @@ mod tests {
                 let (light, surface) = (&lights::F11, &patches::G4);
                 let one = estimate_width(1, light, surface, n, pdf, strata, &mut rng()).expect("width 1");
                 let four = estimate_width(4, light, surface, n, pdf, strata, &mut rng()).expect("width 4");
-                let want_one = estimate_with::<1, _, _>(light, surface, n, pdf, strata, &mut rng());
-                let want_four = estimate_with::<4, _, _>(light, surface, n, pdf, strata, &mut rng());
+                let want_one = estimate_with::<1, _, _>(light, surface, n, pdf, strata, &mut rng()).unwrap();
+                let want_four = estimate_with::<4, _, _>(light, surface, n, pdf, strata, &mut rng()).unwrap();
                 for (got, want) in [(one, want_one), (four, want_four)] {
                     let close = (got - want).to_array().iter().all(|d| d.abs() <= 1e-12 * want.y);
                     assert!(close, "{strata:?}: {got:?} against {want:?}");

@@ -23,10 +23,11 @@ fn close(a: Xyz, b: Xyz, tolerance: f64) -> bool {
 fn hero_is_the_per_sample_calls() {
     let f11 = LightPdf::light(&lights::F11).expect("a bright light");
     let lights = vec![&lights::F11, &lights::A];
-    let hero = Hero::new(lights, vec![&patches::G4, &patches::A1], AssignmentObserver, &f11);
+    let hero = Hero::new(lights, vec![&patches::G4, &patches::A1], AssignmentObserver, &f11)
+        .expect("within the observer");
     for u in [0.0, 0.3, 0.77] {
         let path = hero.path(u);
-        assert_eq!(path, HeroSample::<4>::from_pdf_with(u, &f11, &AssignmentObserver));
+        assert_eq!(path, HeroSample::<4>::from_pdf_with(u, &f11, &AssignmentObserver).unwrap());
         assert_eq!(hero.one(), SampledSpectrum::splat(1.0));
         let beta = hero.albedo(&path, 1) * hero.scale(hero.one(), 0.5);
         assert_eq!(beta, path.sample(&patches::A1) * 0.5);
@@ -39,9 +40,13 @@ fn hero_is_the_per_sample_calls() {
     }
     // In f32, the same wavelengths to rounding.
     let single = Hero::new(vec![&lights::F11], vec![&patches::G4], DenseObserver::new(), Uniform::ASSIGNMENT)
+        .expect("within the observer")
         .precision::<f32>();
     let path = single.path(0.25);
-    assert_eq!(path, HeroSample::<4, f32>::from_pdf_with(0.25, &Uniform::ASSIGNMENT, &DenseObserver::new()));
+    assert_eq!(
+        path,
+        HeroSample::<4, f32>::from_pdf_with(0.25, &Uniform::ASSIGNMENT, &DenseObserver::new()).unwrap()
+    );
     assert_eq!(single.one(), SampledSpectrum::<4, f32>::splat(1.0));
 }
 
@@ -50,7 +55,8 @@ fn hero_is_the_per_sample_calls() {
 /// paths within 1e-3).
 #[test]
 fn a_white_path_has_luminance_one_on_average() {
-    let hero = Hero::new(vec![&lights::D65], vec![&patches::A1], AssignmentObserver, Uniform::ASSIGNMENT);
+    let hero = Hero::new(vec![&lights::D65], vec![&patches::A1], AssignmentObserver, Uniform::ASSIGNMENT)
+        .expect("within the observer");
     let n = 4096;
     let mean =
         (0..n).map(|i| hero.luminance(&hero.path((i as f64 + 0.5) / n as f64), hero.one())).sum::<f64>()
@@ -110,7 +116,8 @@ fn rgb_is_triples() {
 #[test]
 fn indices_past_the_scene_give_nothing() {
     let (light, surface) = (&lights::F11, &patches::G4);
-    let hero = Hero::new(vec![light], vec![surface], DenseObserver::new(), Uniform::ASSIGNMENT);
+    let hero = Hero::new(vec![light], vec![surface], DenseObserver::new(), Uniform::ASSIGNMENT)
+        .expect("within the observer");
     let path = hero.path(0.3);
     assert_eq!(hero.emitted(&path, 1, hero.one()), Xyz::ZERO);
     assert_eq!(hero.albedo(&path, 7), SampledSpectrum::zero());

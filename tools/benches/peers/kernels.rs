@@ -20,6 +20,7 @@
 
 use speclab::SampledSpectrum;
 use speclab::color::{LinearRgb, RgbAlbedo, RgbSpace, RgbTexel};
+use speclab::sampling::Domain;
 use speclab::spectrum::observer::xyz_bar;
 use speclab::spectrum::{DenseSpectrum, Float, Wavelengths};
 use speclab::{HeroSample, LAMBDA_MAX, LAMBDA_MIN, LAMBDA_WIDTH, Spectrum, TabulatedSpectrum, Xyz};
@@ -114,7 +115,8 @@ pub fn speclab_hero<const K: usize, T: Float>(
 
 /// speclab's per-sample path over dense tables (light, surface and
 /// observer at every whole nm, looked up at the nearest), K = 4 in
-/// precision `T`, as the README's first f32 loop writes it: the mean XYZ
+/// precision `T`, as the README's first f32 loop writes it (uniform over
+/// 360–830 nm, the CIE 1931 1 nm observer, `Domain::UNIFORM_VISIBLE`): the mean XYZ
 /// of `n` hero samples. `S` is how the renderer holds its materials (the
 /// table itself, or `Box<dyn Spectrum>`).
 #[inline(never)]
@@ -127,7 +129,7 @@ pub fn speclab_dense_hero<T: Float, L: Spectrum, S: Spectrum>(
     let mut sum = Xyz::ZERO;
     for _ in 0..n {
         let u = T::from_f64(f64::from(rng.next()) * (1.0 / 4_294_967_296.0));
-        let h = HeroSample::<4, T>::new(u);
+        let h = Domain::UNIFORM_VISIBLE.hero::<4, T>(u);
         sum += h.to_xyz(light.sample(&h) * surface.sample(&h));
     }
     sum / n as f64

@@ -210,7 +210,7 @@ pub const fn corners(
 }
 
 /// Every node of a checked compact file, `[case][z][y][x]`: what
-/// [`encode_nodes`] makes the same bytes of.
+/// [`encode_nodes`](super::encode_nodes) makes the same bytes of.
 #[must_use]
 pub fn decode_nodes(bytes: &[u8]) -> Vec<Node> {
     let decoder = Decoder::new(bytes);
