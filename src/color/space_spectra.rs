@@ -180,3 +180,30 @@ pub(crate) fn reflectance_in(table: &RgbTable, rgb: LinearRgb) -> (RgbAlbedo, [C
     let albedo = table.albedo(inside).unwrap_or_else(|_| unreachable!("components clamped into [0, 1]"));
     (albedo, clamp)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::color::RgbSpace;
+
+    /// Each component's report, and the albedo of the clamped colour.
+    #[test]
+    fn reflectance_reports_each_component() {
+        let srgb = RgbSpace::srgb();
+        let cases = [
+            ([0.0, 1.0, 0.5], [Clamp::Inside; 3], [0.0, 1.0, 0.5]),
+            ([-1e-9, 1.0 + 1e-9, f64::NAN], [Clamp::Below, Clamp::Above, Clamp::NotANumber], [0.0, 1.0, 0.0]),
+            (
+                [f64::INFINITY, f64::NEG_INFINITY, 0.25],
+                [Clamp::Above, Clamp::Below, Clamp::Inside],
+                [1.0, 0.0, 0.25],
+            ),
+        ];
+        for (rgb, report, inside) in cases {
+            let (albedo, clamped) = srgb.reflectance(LinearRgb::from(rgb));
+            assert_eq!(clamped, report, "{rgb:?}");
+            assert_eq!(albedo, srgb.albedo(LinearRgb::from(inside)).unwrap(), "{rgb:?}");
+            assert_eq!((**srgb).reflectance(LinearRgb::from(rgb)), (albedo, clamped));
+        }
+    }
+}

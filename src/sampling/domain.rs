@@ -213,3 +213,97 @@ impl<P: WavelengthPdf> Domain<P, DenseObserver> {
         integrate::xyz_of_product_with(observer, self.range(), factors).map(Xyz::from)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spectrum::Constant;
+
+    /// The mean normalised Y of a constant 1 over `n` stratified draws.
+    fn white<P: WavelengthPdf, O: Observer>(domain: &Domain<P, O>, n: u32) -> f64 {
+        let one = Constant::new(1.0);
+        let sum: f64 = (0..n)
+            .map(|i| {
+                let h = domain.hero::<4, f64>((f64::from(i) + 0.5) / f64::from(n));
+                h.to_xyz(h.sample(&one)).y
+            })
+            .sum();
+        domain.normalized(Xyz::new(0.0, sum / f64::from(n), 0.0)).y
+    }
+
+    /// Each built-in domain's `∫ȳ` is its observer's over its range, and
+    /// what a constant 1's draws average to.
+    #[test]
+    fn built_in_domains_normalise_a_constant_to_1() {
+        let visible = DenseObserver::CIE_1931.y_integral(WavelengthRange::VISIBLE);
+        assert_eq!(Domain::VISIBLE.y_integral(), visible);
+        assert_eq!(Domain::UNIFORM_VISIBLE.y_integral(), visible);
+        let assignment = DenseObserver::ASSIGNMENT.y_integral(WavelengthRange::ASSIGNMENT);
+        assert_eq!(Domain::ASSIGNMENT.y_integral(), assignment);
+        assert!((visible - 106.8569).abs() < 1e-4 && (assignment - 106.8489).abs() < 1e-4);
+        for y in [white(&Domain::VISIBLE, 1 << 14), white(&Domain::UNIFORM_VISIBLE, 1 << 14)] {
+            assert!((y - 1.0).abs() < 1e-5, "{y}");
+        }
+        for y in [white(&Domain::ASSIGNMENT, 1 << 14), white(&Domain::ASSIGNMENT_EXACT, 1 << 14)] {
+            assert!((y - 1.0).abs() < 1e-5, "{y}");
+        }
+        let made = Domain::new(Uniform::VISIBLE, DenseObserver::CIE_1931).unwrap();
+        assert_eq!(made, Domain::UNIFORM_VISIBLE);
+        assert_eq!(
+            (made.range(), made.pdf(), made.observer()),
+            (WavelengthRange::VISIBLE, &Uniform::VISIBLE, &DenseObserver::CIE_1931)
+        );
+        let h = made.hero::<4, f64>(0.3);
+        let v = SampledSpectrum::splat(2.0);
+        assert!((made.luminance(&h, v) / (h.y(v) / visible) - 1.0).abs() < 1e-15);
+    }
+
+    /// A uniform density over whole nanometres draws in fixed point (as
+    /// `HeroSample::new`); any other by its inverse CDF.
+    #[test]
+    fn uniform_domains_draw_in_fixed_point() {
+        for u in [0.0f64, 0.1234, 0.5, 0.999] {
+            assert_eq!(Domain::ASSIGNMENT.hero::<4, f32>(u as f32), HeroSample::new(u as f32));
+            assert_eq!(
+                Domain::ASSIGNMENT.hero_by_cdf::<4, f64>(u),
+                HeroSample::from_pdf_with(u, &Uniform::ASSIGNMENT, &DenseObserver::ASSIGNMENT).unwrap()
+            );
+            let v = Domain::UNIFORM_VISIBLE.hero::<4, f64>(u);
+            let expected = 360.0 + (u * 470.0 * 65536.0).floor() / 65536.0;
+            assert_eq!(v.lambda()[0], expected, "{u}");
+            assert_eq!(Domain::VISIBLE.hero::<4, f64>(u), Domain::VISIBLE.hero_by_cdf(u));
+        }
+        let odd =
+            Domain::new(Uniform::over(WavelengthRange::new(400.5, 700.0).unwrap()), DenseObserver::CIE_1931)
+                .unwrap();
+        assert_eq!(odd.hero::<4, f64>(0.25), odd.hero_by_cdf(0.25), "not whole nanometres: by the CDF");
+    }
+
+    /// A density reaching past the observer's data is refused; a hero
+    /// wavelength rebuilds its sample; one outside the range is refused.
+    #[test]
+    fn refusals_and_rebuilds() {
+        assert!(matches!(
+            Domain::new(Visible::VISIBLE, DenseObserver::ASSIGNMENT),
+            Err(Error::RangeOutside { range: [360.0, 830.0], data: [380.0, 780.0], .. })
+        ));
+        for u in [0.0, 0.3, 0.77] {
+            let h = Domain::VISIBLE.hero::<4, f64>(u);
+            let back = Domain::VISIBLE.hero_at::<4, f64>(h.lambda()[0]).unwrap();
+            (0..4).for_each(|j| assert!((back.lambda()[j] - h.lambda()[j]).abs() < 1e-9, "{u}"));
+            let g = Domain::UNIFORM_VISIBLE.hero::<4, f64>(u);
+            assert_eq!(Domain::UNIFORM_VISIBLE.hero_at::<4, f64>(g.lambda()[0]).unwrap(), g);
+        }
+        // The range's last wavelength draws from the last u below 1.
+        let end = Domain::UNIFORM_VISIBLE.hero_at::<4, f64>(830.0).unwrap();
+        assert!((end.lambda()[0] - 830.0).abs() < 1e-4);
+        for outside in [359.0, 830.5, f64::NAN] {
+            assert!(Domain::VISIBLE.hero_at::<4, f64>(outside).is_err(), "{outside}");
+        }
+        let own = Domain::ASSIGNMENT.wavelengths([500.0, 790.0], [0.01, 0.01]);
+        assert!(matches!(own, Err(Error::SampleWavelength { index: 1, .. })));
+        assert!(Domain::ASSIGNMENT.wavelengths([500.0, 790.0], [0.01, 0.0]).is_ok());
+        let one = Domain::VISIBLE.reference(&[&Constant::new(1.0)]).unwrap();
+        assert!((one.y / Domain::VISIBLE.y_integral() - 1.0).abs() < 1e-12);
+    }
+}

@@ -131,7 +131,7 @@ pub(crate) fn integral(s: &dyn Spectrum, a: f64, b: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::spectrum::data::{lights, patches};
-    use crate::spectrum::{Blackbody, FnSpectrum, SigmoidPolynomial};
+    use crate::spectrum::{Blackbody, FnSpectrum, Scaled, SigmoidPolynomial};
 
     /// With the assignment's observer over its range, the same integral;
     /// with a 1 nm observer, a constant integrates to the table's trapezoids.
@@ -151,6 +151,28 @@ mod tests {
         let e =
             xyz_of_product_with(StandardObserver::Cie1931, WavelengthRange::new(300.0, 700.0).unwrap(), &f);
         assert!(matches!(e, Err(Error::RangeOutside { .. })));
+    }
+
+    /// A tint of a 1 nm table (not a polynomial, but bending only at the
+    /// table's nanometres) integrates as exactly as the table alone: its
+    /// kinks split the pieces. Without them the rule would straddle
+    /// D65's 1 nm kinks (about 3e-9 off).
+    #[test]
+    fn a_tinted_illuminant_splits_at_its_tables_kinks() {
+        use crate::color::RgbIlluminant;
+        let tint = RgbIlluminant::from_parts(1.0, SigmoidPolynomial::new([0.0, 0.0, 0.0]), &lights::CIE_D65);
+        assert_eq!(tint.kinks().len(), lights::CIE_D65.breaks().len());
+        let halved = Scaled::new(&tint, 2.0);
+        assert_eq!(halved.kinks(), tint.kinks());
+        let product = crate::spectrum::Product::new(vec![&tint as &dyn Spectrum, &patches::G4]);
+        assert!(product.kinks().len() >= tint.kinks().len());
+        let mixture = crate::spectrum::Mixture::new().with(1.0, &tint).unwrap();
+        assert_eq!(mixture.kinks(), tint.kinks());
+        // The tint of a constant polynomial is half the illuminant.
+        let (tinted, plain) = (white(&tint), white(&lights::CIE_D65));
+        (0..3).for_each(|c| assert!((tinted[c] - 0.5 * plain[c]).abs() < 1e-13 * plain[c], "{tinted:?}"));
+        let one = integral(&tint, 400.0, 700.0);
+        assert!((one - 0.5 * lights::CIE_D65.integral(400.0, 700.0)).abs() < 1e-12 * one, "{one}");
     }
 
     /// The documented accuracy of quadrature for smooth spectra: the rule

@@ -109,3 +109,27 @@ fn many_at_once_are_each_alone() {
         }
     }
 }
+
+/// A spectrum built in code takes the policies a loaded file has: zero
+/// outside (itself), its ends held to 360–830 nm, or refused short of
+/// 380–730 nm.
+#[test]
+fn extension_policies() {
+    use speclab_tables::read::Extend;
+    let s = TabulatedSpectrum::new(vec![400.0, 410.0, 700.0], vec![2.0, 3.0, 8.0], Role::Light).unwrap();
+    assert_eq!(s.extended(Extend::Zero).unwrap(), s);
+    let held = s.extended(Extend::Hold).unwrap();
+    assert_eq!(held.support(), (360.0, 830.0));
+    assert_eq!(
+        (held.eval(360.0), held.eval(399.0), held.eval(829.0), held.eval(500.0)),
+        (2.0, 2.0, 8.0, s.eval(500.0))
+    );
+    assert!(matches!(
+        s.extended(Extend::Refuse),
+        Err(Error::RangeOutside { range: [380.0, 730.0], data: [400.0, 700.0], .. })
+    ));
+    let wide = TabulatedSpectrum::new(vec![380.0, 730.0], vec![1.0, 1.0], Role::Light).unwrap();
+    assert_eq!(wide.extended(Extend::Refuse).unwrap(), wide);
+    let short_top = TabulatedSpectrum::new(vec![380.0, 729.0], vec![1.0, 1.0], Role::Light).unwrap();
+    assert!(short_top.extended(Extend::Refuse).is_err());
+}
