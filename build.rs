@@ -52,11 +52,26 @@ fn main() {
 /// statics with their first wavelength and step.
 fn observers() -> Result<String, String> {
     let mut code = String::from("pub mod observers {\n");
-    for (file, name) in [("cie1931-2", "CIE_1931_2"), ("cie1964-10", "CIE_1964_10")] {
+    let files = [
+        ("cie1931-2", "CIE_1931_2"),
+        ("cie1964-10", "CIE_1964_10"),
+        ("cie2015-2", "CIE_2015_2"),
+        ("cie2015-10", "CIE_2015_10"),
+    ];
+    for (file, name) in files {
         let path = format!("data/observers/{file}.csv");
         println!("cargo:rerun-if-changed={path}");
         let text = std::fs::read_to_string(&path).map_err(|e| format!("{path}: {e}"))?;
-        let table = speclab_tables::observer::parse_observer(&text, &path).map_err(|e| e.to_string())?;
+        let mut table = speclab_tables::observer::parse_observer(&text, &path).map_err(|e| e.to_string())?;
+        // Every table on the 1 nm grid of 360–830 nm (the CIE 2015
+        // observers start at 390 nm: zeros before, outside their data).
+        let (first, last) = (table.first, table.last());
+        if table.step != 1.0 || first < 360.0 || first.fract() != 0.0 || last != 830.0 {
+            return Err(format!("{path}: expected a 1 nm table of whole nanometres ending at 830 nm"));
+        }
+        let mut rows = vec![[0.0; 3]; (first - 360.0) as usize];
+        rows.append(&mut table.rows);
+        (table.first, table.rows) = (360.0, rows);
         code += &table.source(name);
     }
     Ok(code + "}\n")

@@ -115,6 +115,11 @@ pub enum Error {
         /// The temperature given, K.
         kelvin: f64,
     },
+    /// A chromaticity that is not finite.
+    Chromaticity {
+        /// The chromaticity given, `[x, y]`.
+        xy: [f64; 2],
+    },
     /// A weight of a sum that is not finite and non-negative.
     Weight {
         /// Which term.
@@ -284,6 +289,9 @@ impl fmt::Display for Error {
             ),
             Error::Daylight { kelvin } => {
                 write!(f, "expected a daylight temperature from 4000 to 25000 K, found {kelvin} K")
+            }
+            Error::Chromaticity { xy: [x, y] } => {
+                write!(f, "expected a finite chromaticity, found ({x}, {y})")
             }
             Error::Response { channel, lambda, value } => write!(
                 f,

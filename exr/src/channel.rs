@@ -45,24 +45,46 @@ pub fn parse(name: &str) -> Result<Option<(Component, f64)>, ExrError> {
     if component == Component::Reflective && rest.contains('.') {
         return Err(bad("bispectral channels (T.<λ>.<λ>) are not supported"));
     }
-    let unit_at = rest
-        .find(|c: char| c.is_ascii_alphabetic() && c != 'e' && c != 'E')
-        .ok_or_else(|| bad("a wavelength with a unit (nm, um, m, Hz, …)"))?;
-    let (number, unit) = rest.split_at(unit_at);
-    if number.contains('.') {
+    let (number, unit) = rest.split_at(number_length(rest));
+    if unit.starts_with('.') {
         return Err(bad("a comma as decimal mark (374,688nm), found a point"));
     }
-    let digits = number.chars().filter(char::is_ascii_digit).count();
-    let grammar = number.chars().all(|c| c.is_ascii_digit() || matches!(c, ',' | 'e' | 'E' | '+' | '-'));
-    let value: f64 = match (digits, grammar) {
-        (1.., true) => number.replace(',', ".").parse().map_err(|_| bad("a number such as 374,688"))?,
-        _ => return Err(bad("a number such as 374,688 before the unit")),
-    };
+    if number.is_empty() {
+        return Err(bad("a number such as 374,688 before the unit"));
+    }
+    if unit.is_empty() {
+        return Err(bad("a wavelength with a unit (nm, um, m, Hz, …)"));
+    }
+    let value: f64 = number.replace(',', ".").parse().map_err(|_| bad("a number such as 374,688"))?;
     let nm = to_nm(value, unit).ok_or_else(|| bad("a unit of m with an SI prefix (nm, um, …) or Hz"))?;
     if !(nm.is_finite() && nm > 0.0) {
         return Err(bad("a positive, finite wavelength"));
     }
     Ok(Some((component, nm)))
+}
+
+/// The length of the number that opens `s`, by the layout's grammar:
+/// digits, a comma and digits, then an exponent (`e` or `E`, a sign,
+/// digits) only where digits follow, so that `E` before a unit is the exa
+/// prefix (`5,5e-25Em` is 5.5·10⁻²⁵ Em). 0 if `s` opens with no digit.
+fn number_length(s: &str) -> usize {
+    let b = s.as_bytes();
+    let digits = |from: usize| b[from..].iter().take_while(|c| c.is_ascii_digit()).count();
+    let mut end = digits(0);
+    if end == 0 {
+        return 0;
+    }
+    if b.get(end) == Some(&b',') && digits(end + 1) > 0 {
+        end += 1 + digits(end + 1);
+    }
+    if matches!(b.get(end), Some(b'e' | b'E')) {
+        let sign = usize::from(matches!(b.get(end + 1), Some(b'+' | b'-')));
+        let exponent = digits(end + 1 + sign);
+        if exponent > 0 {
+            end += 1 + sign + exponent;
+        }
+    }
+    end
 }
 
 /// `value` in `unit` as nanometres: metres with an SI prefix, or hertz.
@@ -134,10 +156,61 @@ mod tests {
             ("S0.500furlongs", "unit of m"),
             ("S0.0nm", "positive"),
             ("T.500nm.600nm", "bispectral"),
-            ("S0.5,0,0nm", "number"),
+            ("S0.5,0,0nm", "unit"),
+            ("S0.,5nm", "number"),
+            ("S0.5,nm", "unit"),
         ] {
             let e = parse(bad).unwrap_err().to_string();
             assert!(e.contains(bad) && e.contains(why), "{bad}: {e}");
         }
+    }
+
+    /// 550 nm written with every SI prefix of the metre and of the hertz
+    /// (exa's `E` read as the prefix, not an exponent), with and without
+    /// an exponent.
+    #[test]
+    fn every_si_prefix_reads() {
+        let prefixes = [
+            ("Y", 24),
+            ("Z", 21),
+            ("E", 18),
+            ("P", 15),
+            ("T", 12),
+            ("G", 9),
+            ("M", 6),
+            ("k", 3),
+            ("h", 2),
+            ("da", 1),
+            ("", 0),
+            ("d", -1),
+            ("c", -2),
+            ("m", -3),
+            ("u", -6),
+            ("n", -9),
+            ("p", -12),
+            ("f", -15),
+            ("a", -18),
+            ("z", -21),
+            ("y", -24),
+        ];
+        let hertz = LIGHT_SPEED / 550e-9;
+        for (prefix, power) in prefixes {
+            for exponent in ["e", "E"] {
+                let metres = format!("T.5,5{exponent}{}{prefix}m", -7 - power);
+                let got = parse(&metres).unwrap().unwrap().1;
+                assert!((got / 550.0 - 1.0).abs() < 1e-12, "{metres}: {got}");
+                let frequency = format!(
+                    "S0.{}{exponent}{}{prefix}Hz",
+                    format!("{:.12}", hertz / 1e14).replace('.', ","),
+                    14 - power
+                );
+                let got = parse(&frequency).unwrap().unwrap().1;
+                assert!((got / 550.0 - 1.0).abs() < 1e-12, "{frequency}: {got}");
+            }
+        }
+        assert_eq!(parse("T.5,5e-25Em").unwrap(), Some((Component::Reflective, 5.5e-25 * 1e18 * 1e9)));
+        assert_eq!(parse("T.1Em").unwrap().unwrap().1, 1e27, "E alone is exa");
+        assert_eq!(parse("T.5,5E+2nm").unwrap().unwrap().1, 550.0);
+        assert!(parse("T.5E+m").unwrap_err().to_string().contains("unit of m"), "E+ without digits");
     }
 }

@@ -13,9 +13,12 @@
 //!
 //! Reading sorts the channels by wavelength (OpenEXR stores them sorted
 //! by name, so `S0.1000nm` comes before `S0.380nm`); a malformed channel
-//! name, a missing attribute, two channels at one wavelength, or Stokes
-//! components whose wavelengths disagree with `S0`'s is an [`ExrError`]
-//! naming it. Reading never panics on a file (`fuzz/`, target
+//! name, two channels at one wavelength, or Stokes components whose
+//! wavelengths disagree with `S0`'s is an [`ExrError`] naming it. Files
+//! other writers make without `spectralLayoutVersion` or `emissiveUnits`
+//! (colour-science's with its default specification) are read, and what
+//! they lack is reported ([`SpectralFile::departures`]);
+//! [`ReadOptions::strict`] refuses them. Reading never panics on a file (`fuzz/`, target
 //! `spectral_exr`).
 //!
 //! ```
@@ -47,7 +50,9 @@ use speclab::film::{Kind, SpectralImage};
 
 pub use channel::Component;
 pub use error::ExrError;
-pub use read::{DEFAULT_MAX_VALUES, SpectralFile, read, read_from, read_limited};
+pub use read::{
+    DEFAULT_MAX_VALUES, Departure, ReadOptions, SpectralFile, read, read_from, read_limited, read_with,
+};
 
 /// The layout version this crate writes and reads.
 pub const LAYOUT_VERSION: &str = "1.0";

@@ -15,13 +15,66 @@ use speclab::film::{Kind, SpectralImage};
 use crate::channel::{self, Component};
 use crate::{ExrError, LAYOUT_VERSION};
 
-/// A spectral image read from a file, with its units.
+/// A spectral image read from a file, with its units and where the file
+/// departs from the layout.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SpectralFile {
     /// The image (the `S0` or `T` channels, by wavelength).
     pub image: SpectralImage,
-    /// `emissiveUnits`, for an emissive image.
+    /// `emissiveUnits`, for an emissive image that names them.
     pub emissive_units: Option<String>,
+    /// What the layout requires and the file lacks, read anyway (empty
+    /// for a file in the layout; [`ReadOptions::strict`] refuses these).
+    pub departures: Vec<Departure>,
+}
+
+/// A departure from the layout that a reader can read through, reported
+/// so that nothing is assumed silently.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Departure {
+    /// No `spectralLayoutVersion`: read as version 1.0, the only one (what
+    /// colour-science's writer makes with its default specification).
+    NoLayoutVersion,
+    /// An emissive image without `emissiveUnits`: its units are unknown
+    /// ([`SpectralFile::emissive_units`] is `None`).
+    NoEmissiveUnits,
+}
+
+impl std::fmt::Display for Departure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Departure::NoLayoutVersion => "no `spectralLayoutVersion` attribute: read as version 1.0",
+            Departure::NoEmissiveUnits => "no `emissiveUnits` attribute: the radiance's units are unknown",
+        })
+    }
+}
+
+/// How a file is read: how many values it may declare, and whether a
+/// departure from the layout is an error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ReadOptions {
+    /// The most values (pixels × channels, every layer) decoded.
+    pub max_values: usize,
+    /// Refuse a file that lacks an attribute the layout requires
+    /// ([`ExrError::MissingAttribute`]) instead of reporting a
+    /// [`Departure`].
+    pub strict: bool,
+}
+
+impl Default for ReadOptions {
+    /// [`DEFAULT_MAX_VALUES`], lenient.
+    fn default() -> Self {
+        ReadOptions { max_values: DEFAULT_MAX_VALUES, strict: false }
+    }
+}
+
+impl ReadOptions {
+    /// The default limit, every departure an error.
+    #[must_use]
+    pub fn strict() -> Self {
+        ReadOptions { strict: true, ..ReadOptions::default() }
+    }
 }
 
 /// Reads the spectral image in `path`; errors as [`read_from`], and an
@@ -35,19 +88,37 @@ pub fn read(path: impl AsRef<Path>) -> Result<SpectralFile, ExrError> {
 /// 2³⁰, 4 GiB of `f32` (a 1920 × 1080 image of 351 channels is 0.7 × 2³⁰).
 pub const DEFAULT_MAX_VALUES: usize = 1 << 30;
 
-/// Reads a spectral image from `input`: an [`ExrError`] naming what is
-/// wrong for a file that is not OpenEXR, has no spectral channel, a
-/// malformed one, a missing or unknown attribute, or polarised channels
-/// at other wavelengths than `S0`'s; [`ExrError::TooLarge`] for a file
-/// whose headers declare more than [`DEFAULT_MAX_VALUES`] values.
+/// Reads a spectral image from `input` with [`ReadOptions::default`]: an
+/// [`ExrError`] naming what is wrong for a file that is not OpenEXR, has
+/// no spectral channel, a malformed one, an unknown attribute value, or
+/// polarised channels at other wavelengths than `S0`'s; a missing
+/// `spectralLayoutVersion` or `emissiveUnits` is a [`Departure`] in the
+/// result; [`ExrError::TooLarge`] for a file whose headers declare more
+/// than [`DEFAULT_MAX_VALUES`] values.
 pub fn read_from(input: impl Read + Seek) -> Result<SpectralFile, ExrError> {
-    read_limited(input, DEFAULT_MAX_VALUES)
+    read_with(input, &ReadOptions::default())
 }
 
-/// [`read_from`], decoding at most `max_values` values: the headers are
-/// read first, and a file declaring more is refused before anything is
-/// allocated for its pixels (a few hundred bytes can declare gigabytes).
-pub fn read_limited(mut input: impl Read + Seek, max_values: usize) -> Result<SpectralFile, ExrError> {
+/// [`read_from`], decoding at most `max_values` values.
+pub fn read_limited(input: impl Read + Seek, max_values: usize) -> Result<SpectralFile, ExrError> {
+    read_with(input, &ReadOptions { max_values, ..ReadOptions::default() })
+}
+
+/// [`read_from`] as `options` say: the headers are read first, and a file
+/// declaring more than `max_values` is refused before anything is
+/// allocated for its pixels (a few hundred bytes can declare gigabytes);
+/// a strict read refuses every [`Departure`].
+///
+/// ```
+/// use speclab_exr::{Departure, ReadOptions, read_with};
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/colour_reflective_32.exr");
+/// let file = read_with(std::fs::File::open(path)?, &ReadOptions::default())?;
+/// assert_eq!(file.departures, [Departure::NoLayoutVersion]); // colour-science's default writer
+/// assert!(read_with(std::fs::File::open(path)?, &ReadOptions::strict()).is_err());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn read_with(mut input: impl Read + Seek, options: &ReadOptions) -> Result<SpectralFile, ExrError> {
+    let max_values = options.max_values;
     let io = |e: std::io::Error| ExrError::Exr(exr::error::Error::from(e));
     let start = input.stream_position().map_err(io)?;
     let meta = guarded(|| MetaData::read_from_buffered(&mut input, false))?.map_err(ExrError::Exr)?;
@@ -88,7 +159,7 @@ pub fn read_limited(mut input: impl Read + Seek, max_values: usize) -> Result<Sp
                 other => Err(format!("{other:?}")),
             })
         };
-        return build(layer.size.0, layer.size.1, &layer.channel_data.list, spectral, text);
+        return build(layer.size.0, layer.size.1, &layer.channel_data.list, spectral, (text, options.strict));
     }
     Err(ExrError::NoSpectralChannels { found: names })
 }
@@ -122,9 +193,10 @@ fn build(
     height: usize,
     list: &[AnyChannel<FlatSamples>],
     mut spectral: Vec<(usize, Component, f64)>,
-    text: impl Fn(&str) -> Option<Result<String, String>>,
+    (text, strict): (impl Fn(&str) -> Option<Result<String, String>>, bool),
 ) -> Result<SpectralFile, ExrError> {
     let text: &Attribute = &text;
+    let mut departures = Vec::new();
     spectral.sort_by(|a, b| a.1.cmp(&b.1).then(a.2.total_cmp(&b.2)));
     let name = |i: usize| list[i].name.to_string();
     for w in spectral.windows(2) {
@@ -145,13 +217,18 @@ fn build(
         (0, _) => Kind::Reflective,
         _ => return Err(ExrError::Mixed),
     };
-    check_version(text)?;
+    if !check_version(text, strict)? {
+        departures.push(Departure::NoLayoutVersion);
+    }
     let main = if kind == Kind::Emissive { Component::Stokes(0) } else { Component::Reflective };
     let lambda: Vec<f64> = of(main).map(|s| s.2).collect();
     let mut emissive_units = None;
     if kind == Kind::Emissive {
         polarised(&spectral, &lambda, text)?;
-        emissive_units = Some(required(text, "emissiveUnits", "for emissive (S0) channels")?);
+        emissive_units = optional(text, "emissiveUnits", "for emissive (S0) channels", strict)?;
+        if emissive_units.is_none() {
+            departures.push(Departure::NoEmissiveUnits);
+        }
     }
     let columns: Vec<Vec<f32>> = of(main).map(|s| list[s.0].sample_data.values_as_f32().collect()).collect();
     let n = lambda.len();
@@ -162,16 +239,31 @@ fn build(
         }
     }
     let image = SpectralImage::new((width, height), kind, lambda, values).map_err(ExrError::Image)?;
-    Ok(SpectralFile { image, emissive_units })
+    Ok(SpectralFile { image, emissive_units, departures })
 }
 
-/// `spectralLayoutVersion` present and `1.0`.
-fn check_version(text: &Attribute) -> Result<(), ExrError> {
-    let version = required(text, "spectralLayoutVersion", "by the spectral layout")?;
-    if version != LAYOUT_VERSION {
-        return Err(ExrError::Attribute { name: "spectralLayoutVersion", found: version, expected: "1.0" });
+/// `spectralLayoutVersion` `1.0` (true), or absent and not `strict`
+/// (false).
+fn check_version(text: &Attribute, strict: bool) -> Result<bool, ExrError> {
+    match optional(text, "spectralLayoutVersion", "by the spectral layout", strict)? {
+        None => Ok(false),
+        Some(version) if version == LAYOUT_VERSION => Ok(true),
+        Some(found) => Err(ExrError::Attribute { name: "spectralLayoutVersion", found, expected: "1.0" }),
     }
-    Ok(())
+}
+
+/// A text attribute the layout requires: `None` if absent and not
+/// `strict`.
+fn optional(
+    text: &Attribute,
+    name: &'static str,
+    because: &'static str,
+    strict: bool,
+) -> Result<Option<String>, ExrError> {
+    match required(text, name, because) {
+        Err(ExrError::MissingAttribute { .. }) if !strict => Ok(None),
+        other => other.map(Some),
+    }
 }
 
 /// A text attribute that must be there.

@@ -11,7 +11,7 @@ use std::io::Cursor;
 use std::path::Path;
 
 use speclab::film::{Kind, SpectralImage};
-use speclab_exr::{ExrError, Precision, WriteOptions};
+use speclab_exr::{Departure, ExrError, Precision, ReadOptions, WriteOptions};
 
 fn data(name: &str) -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(name)
@@ -110,12 +110,64 @@ fn reflective_units_and_polarised_files() {
     assert_eq!(file.image.pixel(2, 1).unwrap(), [6.0, 6.125, 6.25], "S0 alone");
 }
 
+/// colour-science's writer with its default specification (emissive and
+/// reflective, f32 and f16; `make_colour.py`): no `spectralLayoutVersion`
+/// and, emissive, no `emissiveUnits`. Read, every value bit for bit (the
+/// values are exact in f16), and each missing attribute reported; a
+/// strict read refuses them.
+#[test]
+fn colour_sciences_default_files_read_with_what_they_lack() {
+    let wavelengths = [400.0, 450.0, 500.5, 550.0, 600.0, 650.0, 700.0, 750.0];
+    for (name, kind, departures) in [
+        (
+            "colour_emissive_32.exr",
+            Kind::Emissive,
+            &[Departure::NoLayoutVersion, Departure::NoEmissiveUnits][..],
+        ),
+        (
+            "colour_emissive_16.exr",
+            Kind::Emissive,
+            &[Departure::NoLayoutVersion, Departure::NoEmissiveUnits][..],
+        ),
+        ("colour_reflective_32.exr", Kind::Reflective, &[Departure::NoLayoutVersion][..]),
+        ("colour_reflective_16.exr", Kind::Reflective, &[Departure::NoLayoutVersion][..]),
+    ] {
+        let file = speclab_exr::read(data(name)).unwrap();
+        assert_eq!(file.departures, departures, "{name}");
+        assert_eq!((file.image.kind(), file.image.wavelengths()), (kind, &wavelengths[..]), "{name}");
+        assert_eq!(file.emissive_units, None, "{name}");
+        for p in 0..12 {
+            let expected: Vec<f32> = (0..8).map(|i| p as f32 + 0.125 * i as f32).collect();
+            let got = file.image.pixel(p % 4, p / 4).unwrap();
+            assert_eq!(
+                got.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                expected.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                "{name}, pixel {p}"
+            );
+        }
+        let strict = std::fs::File::open(data(name)).unwrap();
+        let e = speclab_exr::read_with(strict, &ReadOptions::strict()).unwrap_err().to_string();
+        assert!(e.contains("missing attribute `spectralLayoutVersion`"), "{name}: {e}");
+    }
+    // Each attribute alone (OpenImageIO's files): reported leniently,
+    // refused strictly.
+    for (name, departure, says) in [
+        ("no_version.exr", Departure::NoLayoutVersion, "spectralLayoutVersion"),
+        ("no_units.exr", Departure::NoEmissiveUnits, "emissiveUnits"),
+    ] {
+        assert_eq!(speclab_exr::read(data(name)).unwrap().departures, [departure], "{name}");
+        let strict = speclab_exr::read_with(std::fs::File::open(data(name)).unwrap(), &ReadOptions::strict());
+        let e = strict.unwrap_err().to_string();
+        assert!(e.contains(says) && e.contains("missing"), "{name}: {e}");
+        assert!(departure.to_string().contains(says));
+    }
+    assert!(speclab_exr::read(data("pbrt_emissive.exr")).unwrap().departures.is_empty());
+}
+
 #[test]
 fn broken_files_say_what_is_wrong() {
     for (name, says) in [
         ("bad_name.exr", ["S0.550.5nm", "comma"]),
-        ("no_version.exr", ["spectralLayoutVersion", "missing"]),
-        ("no_units.exr", ["emissiveUnits", "missing"]),
         ("disagree.exr", ["S1", "560"]),
         ("rgb_only.exr", ["no spectral channel", "B, G, R"]),
         ("stokes_only.exr", ["S1 has 2", "S0 has 0"]),

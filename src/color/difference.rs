@@ -8,7 +8,10 @@
 //! of a pair more than 180° apart is taken on the shorter arc, in
 //! [0, 360). Checked
 //! against their 34 published test pairs (`tests/truth`). The parametric
-//! factors kL, kC, kH are 1 (reference conditions).
+//! factors kL, kC, kH are 1 (reference conditions) in [`ciede2000`];
+//! [`ciede2000_with`] takes others ([`Parametric::TEXTILES`]: kL = 2, as
+//! CIE 142-2001 suggests for textiles and colour-science's
+//! `textiles=True` sets).
 //!
 //! ```
 //! use speclab::{Xyz, color::difference::{ciede2000, delta_e00}};
@@ -25,9 +28,49 @@ use crate::color::xyz::Xyz;
 /// `25⁷`, the knee of the chroma terms.
 const TWENTY_FIVE_POW_7: f64 = 6_103_515_625.0;
 
-/// CIEDE2000 between two L\*a\*b\* colours `[L*, a*, b*]`.
+/// CIEDE2000's parametric factors: the weights of lightness, chroma and
+/// hue differences under viewing conditions other than the reference
+/// ones (each divides its term; all 1 by default).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Parametric {
+    /// kL, lightness.
+    pub k_l: f64,
+    /// kC, chroma.
+    pub k_c: f64,
+    /// kH, hue.
+    pub k_h: f64,
+}
+
+impl Parametric {
+    /// The reference conditions: 1, 1, 1.
+    pub const REFERENCE: Parametric = Parametric { k_l: 1.0, k_c: 1.0, k_h: 1.0 };
+    /// Textiles: kL = 2, kC = kH = 1.
+    pub const TEXTILES: Parametric = Parametric { k_l: 2.0, k_c: 1.0, k_h: 1.0 };
+}
+
+impl Default for Parametric {
+    fn default() -> Self {
+        Parametric::REFERENCE
+    }
+}
+
+/// CIEDE2000 between two L\*a\*b\* colours `[L*, a*, b*]`, under the
+/// reference conditions.
 #[must_use]
 pub fn ciede2000(lab1: [f64; 3], lab2: [f64; 3]) -> f64 {
+    ciede2000_with(lab1, lab2, Parametric::REFERENCE)
+}
+
+/// CIEDE2000 with parametric factors `k`.
+///
+/// ```
+/// use speclab::color::difference::{Parametric, ciede2000, ciede2000_with};
+/// let (a, b) = ([100.0, 21.57210357, 272.2281935], [50.0, 74.05216981, 276.45318193]);
+/// assert!((ciede2000_with(a, b, Parametric::TEXTILES) - 23.55420943).abs() < 1e-7);
+/// assert_eq!(ciede2000_with(a, b, Parametric::default()), ciede2000(a, b));
+/// ```
+#[must_use]
+pub fn ciede2000_with(lab1: [f64; 3], lab2: [f64; 3], k: Parametric) -> f64 {
     let [l1, a1, b1] = lab1;
     let [l2, a2, b2] = lab2;
     // a′ stretched by G, from the mean chroma of the pair.
@@ -65,7 +108,7 @@ pub fn ciede2000(lab1: [f64; 3], lab2: [f64; 3]) -> f64 {
     let (s_c, s_h) = (1.0 + 0.045 * c_bar, 1.0 + 0.015 * c_bar * t);
     let theta = 30.0 * (-((h_bar - 275.0) / 25.0).powi(2)).exp();
     let r_t = -2.0 * chroma_weight(c_bar) * (2.0 * theta).to_radians().sin();
-    let (l, c, h) = (dl / s_l, dc / s_c, d_big_h / s_h);
+    let (l, c, h) = (dl / (k.k_l * s_l), dc / (k.k_c * s_c), d_big_h / (k.k_h * s_h));
     (l * l + c * c + h * h + r_t * c * h).sqrt()
 }
 
@@ -90,4 +133,32 @@ fn hue_degrees(b: f64, a: f64) -> f64 {
 #[must_use]
 pub fn delta_e00(estimate: Xyz, reference: Xyz, white: Xyz) -> f64 {
     ciede2000(lab(estimate, white), lab(reference, white))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each factor divides its own term: a pair that differs in one of
+    /// lightness, chroma or hue alone is halved by that factor at 2 and
+    /// unchanged by the others.
+    #[test]
+    fn each_factor_weighs_its_own_term() {
+        let two = |k_l, k_c, k_h| Parametric { k_l, k_c, k_h };
+        let cases = [
+            ([40.0, 10.0, 10.0], [60.0, 10.0, 10.0], two(2.0, 1.0, 1.0)), // lightness
+            ([50.0, 10.0, 0.0], [50.0, 20.0, 0.0], two(1.0, 2.0, 1.0)),   // chroma, the same hue
+            ([50.0, 10.0, 10.0], [50.0, 10.0, -10.0], two(1.0, 1.0, 2.0)), // hue, the same chroma
+        ];
+        for (a, b, k) in cases {
+            let reference = ciede2000(a, b);
+            assert!((2.0 * ciede2000_with(a, b, k) - reference).abs() < 1e-12 * reference, "{k:?}");
+            for other in [two(2.0, 1.0, 1.0), two(1.0, 2.0, 1.0), two(1.0, 1.0, 2.0)] {
+                if other != k {
+                    assert!((ciede2000_with(a, b, other) - reference).abs() < 1e-12 * reference, "{other:?}");
+                }
+            }
+        }
+        assert_eq!(Parametric::default(), Parametric::REFERENCE);
+    }
 }

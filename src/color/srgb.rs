@@ -1,6 +1,21 @@
 //! sRGB: linear sRGB by the assignment's matrix, and the IEC 61966-2-1
 //! transfer function that encodes it for display.
 //!
+//! Three XYZ → linear sRGB matrices, each for its own purpose:
+//!
+//! | matrix | first row | serves |
+//! |---|---|---|
+//! | [`XYZ_TO_SRGB`], [`Xyz::to_linear_srgb`] | 3.2410, −1.5374, −0.4986 | the assignment (Appendix 1 part D; Appendix 2's numbers) |
+//! | [`IEC_XYZ_TO_SRGB`], [`Xyz::to_linear_srgb_iec`] | 3.2406, −1.5372, −0.4986 | IEC 61966-2-1 as printed, four decimals (colour-science's `XYZ_to_sRGB`) |
+//! | `RgbSpace::srgb().rgb(xyz)` | 3.24096994, −1.53738318, −0.49861076 | derived from the primaries and D65's (0.3127, 0.3290): a renderer's (pbrt-v4, Mitsuba 3), and the crate's one derived sRGB matrix |
+//!
+//! The printed matrices round a derived one to four decimals: part D's is
+//! within 4.5e-5 of the derived matrix in every entry, IEC's printed one
+//! 3.7e-4 from it and 4.0e-4 from part D's; on colour-science's first test
+//! colour the encoded sRGB moves by 1.6e-4 between the printed and the
+//! derived matrix, 1.1e-4 between the printed and part D's, 5.1e-5
+//! between the derived and part D's.
+//!
 //! [`LinearRgb`] is XYZ through the matrix of Appendix 1, part D
 //! ([`XYZ_TO_SRGB`], four decimals as printed), **unclamped**. [`encode`]
 //! and [`decode`] are the standard's piecewise curve (a linear toe below
@@ -20,6 +35,15 @@ use crate::spectrum::data;
 
 /// XYZ → linear sRGB, from `data/xyz_to_srgb.txt` (Appendix 1, part D).
 pub const XYZ_TO_SRGB: Matrix = data::XYZ_TO_SRGB;
+
+/// XYZ → linear sRGB as IEC 61966-2-1 prints it (four decimals).
+pub const IEC_XYZ_TO_SRGB: Matrix =
+    [[3.2406, -1.5372, -0.4986], [-0.9689, 1.8758, 0.0415], [0.0557, -0.2040, 1.0570]];
+
+/// Linear sRGB → XYZ as IEC 61966-2-1 prints it (four decimals; not the
+/// inverse of [`IEC_XYZ_TO_SRGB`] beyond them).
+pub const IEC_SRGB_TO_XYZ: Matrix =
+    [[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]];
 
 /// Linear sRGB → XYZ: the inverse of [`XYZ_TO_SRGB`], computed at compile
 /// time. Its middle row, the luminance of `r, g, b`, is 0.21262, 0.71514,
@@ -65,6 +89,19 @@ impl Xyz {
         LinearRgb::from(mul(&XYZ_TO_SRGB, self.to_array()))
     }
 
+    /// Linear sRGB by IEC 61966-2-1's printed matrix ([`IEC_XYZ_TO_SRGB`]),
+    /// unclamped: colour-science's `XYZ_to_sRGB` before its encoding.
+    ///
+    /// ```
+    /// use speclab::{Xyz, color::srgb::encode};
+    /// let rgb = Xyz::new(0.20654008, 0.12197225, 0.05136952).to_linear_srgb_iec();
+    /// assert!((encode(rgb.r) - 0.70573936).abs() < 1e-7); // colour-science's test
+    /// ```
+    #[must_use]
+    pub fn to_linear_srgb_iec(self) -> LinearRgb {
+        LinearRgb::from(mul(&IEC_XYZ_TO_SRGB, self.to_array()))
+    }
+
     /// Linear sRGB back to XYZ by [`SRGB_TO_XYZ`].
     #[must_use]
     pub fn from_linear_srgb(rgb: LinearRgb) -> Xyz {
@@ -83,6 +120,30 @@ pub fn luminance(rgb: LinearRgb) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The three matrices and how far apart they put one colour (the
+    /// module's table).
+    #[test]
+    fn three_matrices_apart() {
+        let derived = crate::color::RgbSpace::srgb().to_rgb_matrix();
+        let apart = |a: &Matrix, b: &Matrix| {
+            a.iter().flatten().zip(b.iter().flatten()).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max)
+        };
+        assert!((apart(derived, &XYZ_TO_SRGB) - 4.5e-5).abs() < 0.1e-5);
+        assert!((apart(derived, &IEC_XYZ_TO_SRGB) - 3.7e-4).abs() < 0.1e-4);
+        assert!((apart(&IEC_XYZ_TO_SRGB, &XYZ_TO_SRGB) - 4.0e-4).abs() < 1e-12);
+        let xyz = Xyz::new(0.20654008, 0.12197225, 0.05136952);
+        let encoded = |v: LinearRgb| [encode(v.r), encode(v.g), encode(v.b)];
+        let (iec, part_d) = (encoded(xyz.to_linear_srgb_iec()), encoded(xyz.to_linear_srgb()));
+        let derived = encoded(LinearRgb::from(mul(derived, xyz.to_array())));
+        let far = |a: [f64; 3], b: [f64; 3]| (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max);
+        assert!((far(iec, derived) - 1.6e-4).abs() < 0.05e-4);
+        assert!((far(iec, part_d) - 1.1e-4).abs() < 0.05e-4);
+        assert!((far(derived, part_d) - 5.1e-5).abs() < 0.05e-5);
+        // The printed pair are each other's inverses to their four decimals.
+        let product = crate::color::matrix::product(&IEC_XYZ_TO_SRGB, &IEC_SRGB_TO_XYZ);
+        (0..3).for_each(|i| (0..3).for_each(|j| assert!((product[i][j] - f64::from(i == j)).abs() < 1e-3)));
+    }
 
     /// IEC 61966-2-1: the two pieces meet at 0.0031308 (encoded 0.040450),
     /// up to a step of 2.9e-8 that the standard's rounded constants leave;

@@ -175,6 +175,28 @@ pub(super) fn one_nm_table(observer: StandardObserver) -> Result<(f64, &'static 
     }
 }
 
+/// ASTM E2022's Lagrange coefficients for a measurement `interval` (in
+/// whole nanometres): for each of the `interval − 1` nanometres between
+/// two measurements, the weights of the four around it inside the range
+/// (cubic, `inner`) and of the three at its ends (quadratic,
+/// `boundary`): E2022's Tables A and B (colour-science's
+/// `lagrange_coefficients_ASTME2022`). Empty for an interval below 2.
+///
+/// ```
+/// use speclab::colorimetry::astm::lagrange_coefficients;
+/// let (inner, boundary) = lagrange_coefficients(10);
+/// assert_eq!((inner.len(), boundary.len()), (9, 9));
+/// assert_eq!(inner[4], [-0.0625, 0.5625, 0.5625, -0.0625]);
+/// assert!((boundary[0][0] - 0.855).abs() < 1e-15);
+/// ```
+#[must_use]
+pub fn lagrange_coefficients(interval: usize) -> (Vec<[f64; 4]>, Vec<[f64; 3]>) {
+    let at = |t: usize| t as f64 / interval as f64;
+    let inner = (1..interval).map(|t| lagrange::<4>(1.0 + at(t))).collect();
+    let boundary = (1..interval).map(|t| lagrange::<3>(at(t))).collect();
+    (inner, boundary)
+}
+
 /// The Lagrange basis polynomials through nodes 0, 1, …, n − 1, at `r`.
 fn lagrange<const N: usize>(r: f64) -> [f64; N] {
     std::array::from_fn(|j| {
@@ -191,8 +213,7 @@ fn lagrange_weights(sc: &[[f64; 3]], step: usize) -> Vec<[f64; 3]> {
     let inner_count = step - 1;
     let mut w: Vec<[f64; 3]> = sc.iter().step_by(step).copied().collect();
     let last = w.len() - 1;
-    let boundary: Vec<[f64; 3]> = (1..step).map(|t| lagrange::<3>(t as f64 / step as f64)).collect();
-    let inner: Vec<[f64; 4]> = (1..step).map(|t| lagrange::<4>(1.0 + t as f64 / step as f64)).collect();
+    let (inner, boundary) = lagrange_coefficients(step);
     let mut add = |row: usize, coefficient: f64, term: [f64; 3]| {
         (0..3).for_each(|c| w[row][c] += coefficient * term[c])
     };

@@ -7,7 +7,12 @@
 //! observer, range and step ([`Tristimulus`]) and Planck's constants
 //! ([`PlanckConstants`]). [`Planckian::CIE`] is CIE 015:2018's practice
 //! and colour-science's default: the 1931 observer over 360–780 nm at 1 nm,
-//! c₂ = 1.4388e-2 m·K. The daylight locus is `data::lights::daylight_xy`.
+//! c₂ = 1.4388e-2 m·K.
+//!
+//! The CIE daylight locus (CIE 015:2018 §4.1.2): [`daylight_locus_y`]
+//! gives `y_D` of `x_D`, `data::lights::daylight_xy` the chromaticity of a
+//! temperature, and [`daylight_cct`] the temperature along the locus
+//! nearest a chromaticity.
 //!
 //! ```
 //! use speclab::colorimetry::cct::{Planckian, uv_from_xy};
@@ -21,6 +26,7 @@
 
 use crate::colorimetry::Tristimulus;
 use crate::error::Error;
+use crate::spectrum::data::lights::daylight_xy;
 use crate::spectrum::{Constant, FnSpectrum, PlanckConstants, WavelengthRange};
 
 /// The CIE 1960 UCS `[u, v]` of the chromaticity `[x, y]`.
@@ -110,6 +116,58 @@ impl Planckian {
         Ok(solve([tp, ti, tn], [dp, di, dn], p, n, uv[1]))
     }
 }
+
+/// The CIE daylight locus: `y_D = −3.000·x_D² + 2.870·x_D − 0.275`.
+#[must_use]
+pub fn daylight_locus_y(x: f64) -> f64 {
+    -3.000 * x * x + 2.870 * x - 0.275
+}
+
+/// The temperature (K, 4000–25000, as `data::lights::daylight_xy` takes
+/// it) whose daylight chromaticity is nearest `xy` in CIE 1931 `x, y`
+/// (colour-science's `xy_to_CCT_CIE_D`): a chromaticity past either end
+/// of the locus gets that end. An [`Error::Chromaticity`] for a
+/// non-finite `xy`. Golden-section search to 1e-7 K.
+///
+/// ```
+/// use speclab::colorimetry::cct::daylight_cct;
+/// use speclab::data::lights::daylight_xy;
+/// let t = daylight_cct(daylight_xy(5003.0)?)?;
+/// assert!((t - 5003.0).abs() < 1e-6);
+/// # Ok::<(), speclab::Error>(())
+/// ```
+pub fn daylight_cct(xy: [f64; 2]) -> Result<f64, Error> {
+    if !(xy[0].is_finite() && xy[1].is_finite()) {
+        return Err(Error::Chromaticity { xy });
+    }
+    let distance = |t: f64| {
+        let d = daylight_xy(t).unwrap_or([f64::INFINITY; 2]);
+        (d[0] - xy[0]).hypot(d[1] - xy[1])
+    };
+    let ratio = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = DAYLIGHT;
+    let (mut c, mut d) = (b - ratio * (b - a), a + ratio * (b - a));
+    let (mut fc, mut fd) = (distance(c), distance(d));
+    while b - a > 1e-7 {
+        if fc <= fd {
+            (b, d, fd) = (d, c, fc);
+            c = b - ratio * (b - a);
+            fc = distance(c);
+        } else {
+            (a, c, fc) = (c, d, fd);
+            d = a + ratio * (b - a);
+            fd = distance(d);
+        }
+    }
+    // The ends themselves, where the locus stops.
+    let middle = 0.5 * (a + b);
+    let best =
+        [DAYLIGHT.0, middle, DAYLIGHT.1].into_iter().min_by(|&s, &t| distance(s).total_cmp(&distance(t)));
+    Ok(best.unwrap_or(middle))
+}
+
+/// The daylight locus' temperatures, K.
+const DAYLIGHT: (f64, f64) = (4000.0, 25000.0);
 
 /// The triangular solution, or the parabolic one where `|Duv| ≥ 0.002`.
 fn solve([tp, ti, tn]: [f64; 3], [dp, di, dn]: [f64; 3], p: [f64; 2], n: [f64; 2], v: f64) -> (f64, f64) {

@@ -7,12 +7,14 @@
 //!   perfect white under the light).
 //! - [`astm`]: ASTM E308 weighting tables (E2022's construction) for any
 //!   light, every 1 to 20 nm, over any range of whole nanometres, and
-//!   their adjustment to a measured range.
+//!   their adjustment to a measured range; E2022's Lagrange coefficients
+//!   ([`astm::lagrange_coefficients`]).
 //! - [`e308`]: ASTM E308's practice for a reflectance measured every 1,
 //!   5, 10 or 20 nm (given as a [`crate::spectrum::Sprague`] interpolant,
 //!   the CIE's recommended interpolation of 5 nm tables).
 //! - [`cct`]: the Planckian locus ([`cct::Planckian`]), CIE 1960 `u, v`,
-//!   and `(T, Duv)` of a chromaticity by Ohno 2013, both ways.
+//!   and `(T, Duv)` of a chromaticity by Ohno 2013, both ways; the daylight
+//!   locus `y_D(x_D)` and the temperature along it nearest a chromaticity.
 //! - Around them, on the floors below: the observers and ranges
 //!   ([`crate::spectrum::StandardObserver`], [`crate::spectrum::WavelengthRange`]),
 //!   Planck's constants by name ([`crate::spectrum::PlanckConstants`]),

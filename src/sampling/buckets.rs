@@ -92,6 +92,8 @@ impl BucketRule {
         match (observer, self) {
             (StandardObserver::Cie1931, rule) => table_bucket(&observers::CIE_1931_2, rule, a, b),
             (StandardObserver::Cie1964, rule) => table_bucket(&observers::CIE_1964_10, rule, a, b),
+            (StandardObserver::Cie2015_2, rule) => table_bucket(&observers::CIE_2015_2, rule, a, b),
+            (StandardObserver::Cie2015_10, rule) => table_bucket(&observers::CIE_2015_10, rule, a, b),
             (StandardObserver::Assignment, BucketRule::Center) => {
                 let lambda = 0.5 * (a + b);
                 [

@@ -259,6 +259,10 @@ impl DenseObserver {
     pub const CIE_1931: DenseObserver = DenseObserver { rows: &CIE_1931_ROWS };
     /// The CIE 1964 10° observer's 1 nm table.
     pub const CIE_1964: DenseObserver = DenseObserver { rows: &CIE_1964_ROWS };
+    /// The CIE 2015 2° observer's 1 nm table (CIE 170-2), 390–830 nm.
+    pub const CIE_2015_2: DenseObserver = DenseObserver { rows: &CIE_2015_2_ROWS };
+    /// The CIE 2015 10° observer's 1 nm table (CIE 170-2), 390–830 nm.
+    pub const CIE_2015_10: DenseObserver = DenseObserver { rows: &CIE_2015_10_ROWS };
 
     /// [`DenseObserver::ASSIGNMENT`] (nothing to build: its rows are static).
     #[must_use]
@@ -342,6 +346,13 @@ static CIE_1931_ROWS: DenseRows =
     dense_rows("CIE 1931 2°", WavelengthRange::VISIBLE, &table_rows(&observers::CIE_1931_2));
 static CIE_1964_ROWS: DenseRows =
     dense_rows("CIE 1964 10°", WavelengthRange::VISIBLE, &table_rows(&observers::CIE_1964_10));
+static CIE_2015_2_ROWS: DenseRows =
+    dense_rows("CIE 2015 2°", CIE_2015_DATA, &table_rows(&observers::CIE_2015_2));
+static CIE_2015_10_ROWS: DenseRows =
+    dense_rows("CIE 2015 10°", CIE_2015_DATA, &table_rows(&observers::CIE_2015_10));
+
+/// Where the CIE 2015 observers' data lie, nm.
+pub(crate) const CIE_2015_DATA: WavelengthRange = WavelengthRange::VISIBLE.with_min(390.0);
 
 /// Both precisions of `f64` rows.
 const fn dense_rows(name: &'static str, data: WavelengthRange, f64: &[[f64; 4]; DENSE_ENTRIES]) -> DenseRows {

@@ -42,6 +42,11 @@ impl WavelengthRange {
         }
     }
 
+    /// The same range starting at `min` (for constants; unchecked).
+    pub(crate) const fn with_min(self, min: f64) -> Self {
+        WavelengthRange { min, ..self }
+    }
+
     /// The same range ending at `max` (for constants; unchecked).
     pub(crate) const fn with_max(self, max: f64) -> Self {
         WavelengthRange { max, ..self }

@@ -5,6 +5,9 @@
 //!   CIE 1931 2° and CIE 1964 10° observers, the CIE's 1 nm tables over
 //!   360–830 nm (`data/observers/`), linear between the nanometres as the
 //!   CIE's tables are read (and pbrt-v4 and Mitsuba 3 read theirs).
+//! - [`StandardObserver::Cie2015_2`] and [`StandardObserver::Cie2015_10`]:
+//!   the CIE 2015 cone-fundamental-based observers (CIE 170-2:2015), 1 nm
+//!   over 390–830 nm, linear.
 //! - [`StandardObserver::Assignment`]: the assignment's 5 nm table of the 1931
 //!   observer over 380–780 nm, with the four-point cubic
 //!   ([`crate::spectrum::observer`]); Appendix 2, the study and the
@@ -41,18 +44,39 @@ pub enum StandardObserver {
     Cie1964,
     /// The assignment's 5 nm CIE 1931 table, 380–780 nm, cubic (Appendix 1).
     Assignment,
+    /// The CIE 2015 2° observer (CIE 170-2:2015), 1 nm, 390–830 nm, linear.
+    Cie2015_2,
+    /// The CIE 2015 10° observer (CIE 170-2:2015), 1 nm, 390–830 nm, linear.
+    Cie2015_10,
 }
 
 /// A table at a uniform step: first wavelength, step (nm), `[x̄, ȳ, z̄]` rows.
 pub type Table = (f64, f64, &'static [[f64; 3]]);
 
 /// The names [`StandardObserver::named`] takes (any case).
-const NAMES: [&str; 9] = ["CIE 1931", "1931", "2°", "CIE 1964", "1964", "10°", "assignment", "2", "10"];
+const NAMES: [&str; 11] = [
+    "CIE 1931",
+    "1931",
+    "2°",
+    "CIE 1964",
+    "1964",
+    "10°",
+    "assignment",
+    "CIE 2015 2°",
+    "CIE 2015 10°",
+    "2",
+    "10",
+];
 
 impl StandardObserver {
     /// Every observer.
-    pub const ALL: [StandardObserver; 3] =
-        [StandardObserver::Cie1931, StandardObserver::Cie1964, StandardObserver::Assignment];
+    pub const ALL: [StandardObserver; 5] = [
+        StandardObserver::Cie1931,
+        StandardObserver::Cie1964,
+        StandardObserver::Assignment,
+        StandardObserver::Cie2015_2,
+        StandardObserver::Cie2015_10,
+    ];
 
     /// The observer's name, as in errors and tables.
     #[must_use]
@@ -61,20 +85,25 @@ impl StandardObserver {
             StandardObserver::Cie1931 => "CIE 1931 2°",
             StandardObserver::Cie1964 => "CIE 1964 10°",
             StandardObserver::Assignment => "assignment's CIE 1931 (5 nm)",
+            StandardObserver::Cie2015_2 => "CIE 2015 2°",
+            StandardObserver::Cie2015_10 => "CIE 2015 10°",
         }
     }
 
     /// The observer named `name` (any case; `deg` for `°`): `CIE 1931`,
-    /// `1931`, `2°`, `CIE 1964`, `1964`, `10°`, `assignment`.
+    /// `1931`, `2°`, `CIE 1964`, `1964`, `10°`, `assignment`, `CIE 2015 2°`,
+    /// `CIE 2015 10°`.
     pub fn named(name: &str) -> Result<Self, Error> {
         let key = name.trim().to_lowercase().replace("deg", "°").replace(' ', "");
         match key.as_str() {
             "cie1931" | "1931" | "2°" | "2" | "cie19312°" => Ok(StandardObserver::Cie1931),
             "cie1964" | "1964" | "10°" | "10" | "cie196410°" => Ok(StandardObserver::Cie1964),
             "assignment" => Ok(StandardObserver::Assignment),
+            "cie20152°" | "20152°" => Ok(StandardObserver::Cie2015_2),
+            "cie201510°" | "201510°" => Ok(StandardObserver::Cie2015_10),
             _ => Err(Error::UnknownName {
                 what: "an observer",
-                expected: &NAMES[..7],
+                expected: &NAMES[..9],
                 found: name.to_string(),
             }),
         }
@@ -85,7 +114,8 @@ impl StandardObserver {
     pub const fn data_range(self) -> WavelengthRange {
         match self {
             StandardObserver::Assignment => WavelengthRange::ASSIGNMENT.with_max(780.0),
-            _ => WavelengthRange::VISIBLE,
+            StandardObserver::Cie2015_2 | StandardObserver::Cie2015_10 => observer::CIE_2015_DATA,
+            StandardObserver::Cie1931 | StandardObserver::Cie1964 => WavelengthRange::VISIBLE,
         }
     }
 
@@ -99,6 +129,12 @@ impl StandardObserver {
             StandardObserver::Cie1964 => {
                 Some((tables::CIE_1964_10_FIRST, tables::CIE_1964_10_STEP, &tables::CIE_1964_10))
             }
+            StandardObserver::Cie2015_2 => {
+                Some((tables::CIE_2015_2_FIRST, tables::CIE_2015_2_STEP, &tables::CIE_2015_2))
+            }
+            StandardObserver::Cie2015_10 => {
+                Some((tables::CIE_2015_10_FIRST, tables::CIE_2015_10_STEP, &tables::CIE_2015_10))
+            }
             StandardObserver::Assignment => None,
         }
     }
@@ -111,21 +147,24 @@ impl StandardObserver {
             StandardObserver::Cie1931 => DenseObserver::CIE_1931,
             StandardObserver::Cie1964 => DenseObserver::CIE_1964,
             StandardObserver::Assignment => DenseObserver::ASSIGNMENT,
+            StandardObserver::Cie2015_2 => DenseObserver::CIE_2015_2,
+            StandardObserver::Cie2015_10 => DenseObserver::CIE_2015_10,
         }
     }
 
     /// The standard observer whose 1 nm table `dense` is ([`dense`](Self::dense)'s inverse).
     #[must_use]
     pub fn of_dense(dense: &DenseObserver) -> StandardObserver {
-        let all = [StandardObserver::Cie1931, StandardObserver::Cie1964];
-        all.into_iter().find(|o| o.dense() == *dense).unwrap_or(StandardObserver::Assignment)
+        let tables = StandardObserver::ALL.into_iter().filter(|o| o.table().is_some());
+        tables.into_iter().find(|o| o.dense() == *dense).unwrap_or(StandardObserver::Assignment)
     }
 
     /// `[x̄, ȳ, z̄]` at `lambda` nm; zero outside the data (and at NaN).
     #[must_use]
     pub fn xyz_bar(self, lambda: f64) -> [f64; 3] {
         match self.table() {
-            Some(table) => lerp(table, lambda),
+            Some(table) if self.data_range().contains(lambda) => lerp(table, lambda),
+            Some(_) => [0.0; 3],
             None => observer::xyz_bar(lambda),
         }
     }
@@ -142,6 +181,8 @@ impl StandardObserver {
                     StandardObserver::Cie1931 => "the CIE 1931 2° observer",
                     StandardObserver::Cie1964 => "the CIE 1964 10° observer",
                     StandardObserver::Assignment => "the assignment's observer",
+                    StandardObserver::Cie2015_2 => "the CIE 2015 2° observer",
+                    StandardObserver::Cie2015_10 => "the CIE 2015 10° observer",
                 },
                 data: [data.min(), data.max()],
             })

@@ -5,6 +5,7 @@
 
 mod appendix2;
 mod ciede2000;
+mod colour_pieces;
 mod colour_science;
 mod colour_tristimulus;
 mod data;
