@@ -108,8 +108,10 @@ impl Default for Visible {
 }
 
 impl Visible {
-    const A: f64 = 0.0072;
-    const CENTER: f64 = 538.0;
+    /// `a`, the density's slope, 1/nm (pbrt-v4's 0.0072).
+    pub const SLOPE: f64 = 0.0072;
+    /// The density's peak, nm (pbrt-v4's 538).
+    pub const CENTER: f64 = 538.0;
 
     /// Renormalised to 380–730 nm (`tanh` at the ends as literals; a test
     /// checks them).
@@ -135,16 +137,24 @@ impl Visible {
         self.range
     }
 
+    /// `[tanh(a·(min − 538)), tanh(a·(max − 538))]`: the CDF's numerator
+    /// at the range's ends (what a shader drawing from this density needs
+    /// besides [`Visible::SLOPE`] and [`Visible::CENTER`]).
+    #[must_use]
+    pub const fn tanh_ends(self) -> [f64; 2] {
+        [self.t0, self.t1]
+    }
+
     /// `tanh(a·(λ − 538))`, the CDF's numerator.
     #[inline]
     fn tanh_at(lambda: f64) -> f64 {
-        (Self::A * (lambda - Self::CENTER)).tanh()
+        (Self::SLOPE * (lambda - Self::CENTER)).tanh()
     }
 
     /// `a / (t1 − t0)`: the density is this times `1 − tanh²`.
     #[inline]
     fn norm(&self) -> f64 {
-        Self::A / (self.t1 - self.t0)
+        Self::SLOPE / (self.t1 - self.t0)
     }
 }
 
@@ -180,7 +190,7 @@ impl WavelengthPdf for Visible {
     #[inline]
     fn sample_with_inv_pdf(&self, u: f64) -> (f64, f64) {
         let y = self.t0 + unit(u) * (self.t1 - self.t0);
-        let lambda = (Self::CENTER + y.atanh() / Self::A).clamp(self.range.min(), self.range.max());
+        let lambda = (Self::CENTER + y.atanh() / Self::SLOPE).clamp(self.range.min(), self.range.max());
         (lambda, reciprocal(self.norm() * (1.0 - y * y)))
     }
 }

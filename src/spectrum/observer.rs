@@ -269,6 +269,15 @@ impl DenseObserver {
     pub const fn new() -> Self {
         Self::ASSIGNMENT
     }
+
+    /// The rows `[x̄, ȳ, z̄, 1]` at 360, 361, …, 830 nm in precision `T`
+    /// (`[0, 0, 0, 1]` outside the observer's data): what a sample's
+    /// nearest nanometre reads, and what a shader's observer buffer holds.
+    #[must_use]
+    pub fn rows<T: Float>(&self) -> &'static [[T; 4]; DENSE_VALUES] {
+        let all = T::choose(&self.rows.f32, &self.rows.f64);
+        all.first_chunk().expect("471 of 472 rows")
+    }
 }
 
 impl Default for DenseObserver {

@@ -21,12 +21,17 @@ pub(crate) const MAX_TILES: usize = 32;
 /// A decoded tile, once.
 type Tile = OnceLock<Box<[f32]>>;
 
+/// Places for tiles: 3 cases × [`MAX_TILES`]² (72 KB), allocated at the
+/// first lookup so that a `static` cache stays a few bytes in the program.
+const SLOTS: usize = 3 * MAX_TILES * MAX_TILES;
+
 /// Where a table keeps its decoded tiles: one per case and tile, each
 /// decoded once. A built-in table's is a `static`; [`crate::rgb_table!`]
 /// makes one for a table embedded by a downstream crate.
 #[derive(Debug)]
 pub struct TileCache {
-    tiles: [[[Tile; MAX_TILES]; MAX_TILES]; 3],
+    /// Case `c`'s tile `(tz, ty)` at `(c·MAX_TILES + tz)·MAX_TILES + ty`.
+    tiles: OnceLock<Box<[Tile]>>,
     /// A compact file's decoder (its codes' lookup tables), made once.
     decoder: OnceLock<compact::Decoder>,
 }
@@ -41,8 +46,7 @@ impl TileCache {
     /// An empty cache.
     #[must_use]
     pub const fn new() -> TileCache {
-        let tiles = [const { [const { [const { OnceLock::new() }; MAX_TILES] }; MAX_TILES] }; 3];
-        TileCache { tiles, decoder: OnceLock::new() }
+        TileCache { tiles: OnceLock::new(), decoder: OnceLock::new() }
     }
 
     /// Tile `[tz, ty]` of case `case` of the checked table file `bytes`
@@ -50,7 +54,11 @@ impl TileCache {
     /// for an index past the table's (which a lookup never asks for).
     #[inline]
     pub(crate) fn get(&self, bytes: &[u8], n: usize, case: usize, [tz, ty]: [usize; 2]) -> &[f32] {
-        match self.tiles.get(case).and_then(|c| c.get(tz)).and_then(|t| t.get(ty)) {
+        if case >= 3 || tz >= MAX_TILES || ty >= MAX_TILES {
+            return &[];
+        }
+        let slots = self.tiles.get_or_init(|| (0..SLOTS).map(|_| OnceLock::new()).collect());
+        match slots.get((case * MAX_TILES + tz) * MAX_TILES + ty) {
             Some(cell) => cell.get_or_init(|| self.decode(bytes, n, case, tz, ty)),
             None => &[],
         }
@@ -58,7 +66,7 @@ impl TileCache {
 
     /// How many tiles are decoded.
     pub(crate) fn decoded(&self) -> usize {
-        self.tiles.iter().flatten().flatten().filter(|t| t.get().is_some()).count()
+        self.tiles.get().map_or(0, |slots| slots.iter().filter(|t| t.get().is_some()).count())
     }
 
     /// Tile `(tz, ty)` of case `case`, decoded (version 2) or copied
@@ -106,4 +114,23 @@ fn f32_tile(bytes: &[u8], n: usize, case: usize, tz: usize, ty: usize) -> Vec<[f
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A cache is under a kilobyte until a lookup allocates its slots (a
+    /// built-in table's `static` is in every program naming its space),
+    /// and an index past the slots reads an empty tile.
+    #[test]
+    fn a_cache_is_small_until_used() {
+        assert!(std::mem::size_of::<TileCache>() <= 1024, "{}", std::mem::size_of::<TileCache>());
+        let cache = TileCache::new();
+        assert_eq!(cache.decoded(), 0);
+        assert!(cache.get(&[], 64, 3, [0, 0]).is_empty());
+        assert!(cache.get(&[], 64, 0, [MAX_TILES, 0]).is_empty());
+        assert!(cache.get(&[], 64, 0, [0, MAX_TILES]).is_empty());
+        assert_eq!(cache.decoded(), 0);
+    }
 }
