@@ -173,6 +173,7 @@ fn broken_files_say_what_is_wrong() {
         ("stokes_only.exr", ["S1 has 2", "S0 has 0"]),
         ("duplicate.exr", ["S0.450nm", "S0.4,5e2nm"]),
         ("bad_handedness.exr", ["polarisationHandedness", "left or right, found \"up\""]),
+        ("version_2.exr", ["spectralLayoutVersion", "2.0"]),
     ] {
         let e = speclab_exr::read(data(name)).unwrap_err().to_string();
         assert!(says.iter().all(|s| e.contains(s)), "{name}: {e}");
