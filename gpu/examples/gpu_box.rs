@@ -29,12 +29,13 @@ use speclab_study::render::{Options, Setup, render};
 /// Image size, GPU paths per pixel, CPU passes and paths per pass.
 const SIZE: usize = 64;
 const GPU_SPP: u32 = 512;
-const PASSES: u64 = 8;
-const CPU_SPP: usize = 32;
-/// The most paths per pixel in one dispatch: on lavapipe a dispatch of
-/// 2,048 paths per pixel (11 s) returned sums 5–45 % low, reproducibly,
-/// where 256 to 1,024 agree with the CPU; the cause is not known.
-const DISPATCH_SPP: u32 = 256;
+const PASSES: u64 = 32;
+const CPU_SPP: usize = 16;
+/// The most paths per pixel in one dispatch. On lavapipe a dispatch of
+/// 1,024 or 2,048 paths per pixel ends some pixels' loops early (as few as
+/// 814 paths traced, reproducibly; 256 and fewer trace them all): each
+/// pixel counts its paths, and a short count is an error.
+const DISPATCH_SPP: u32 = 64;
 
 fn main() {
     let out = std::env::args()
@@ -92,26 +93,34 @@ fn gpu_render(gpu: &Gpu, setup: &Setup) -> Result<GpuImage, Box<dyn std::error::
     spectra.extend(&setup.patches);
     let spectra: Vec<&dyn speclab::Spectrum> =
         spectra.into_iter().map(|s| s as &dyn speclab::Spectrum).collect();
-    let data = Data::new(DenseObserver::ASSIGNMENT, space, &spectra).upload(&gpu.device);
+    let data = Data::new(DenseObserver::ASSIGNMENT, space, &spectra).upload(&gpu.device)?;
     let kernel = speclab_gpu::source(space) + &scene_constants(&setup.scene) + include_str!("gpu_box.wgsl");
     let spp: u32 = std::env::var("GPU_SPP").ok().and_then(|v| v.parse().ok()).unwrap_or(GPU_SPP);
     let n = SIZE * SIZE;
     // Dispatches of at most 256 paths per pixel, summed here (as a
     // renderer's progressive passes).
-    let mut sums = vec![0.0f64; 7 * n];
-    for (pass, start) in (0..spp).step_by(DISPATCH_SPP as usize).enumerate() {
-        let mut input = vec![SIZE as u32, SIZE as u32, DISPATCH_SPP.min(spp - start), 0x5eed + pass as u32];
+    let per_dispatch: u32 =
+        std::env::var("DISPATCH_SPP").ok().and_then(|v| v.parse().ok()).unwrap_or(DISPATCH_SPP);
+    let mut sums = vec![0.0f64; 8 * n];
+    for (pass, start) in (0..spp).step_by(per_dispatch.max(1) as usize).enumerate() {
+        let mut input = vec![SIZE as u32, SIZE as u32, per_dispatch.min(spp - start), 0x5eed + pass as u32];
         input.extend(setup.colours.iter().flat_map(|c| c.to_array().map(|v| (v as f32).to_bits())));
-        let words = gpu.run(&kernel, &data, &input, 7 * n, n as u32)?;
+        let words = gpu.run(&kernel, &data, &input, 8 * n, n as u32)?;
         for (k, (s, w)) in sums.iter_mut().zip(words).enumerate() {
             let v = f64::from(f32::from_bits(w));
             // Word 6 of a pixel is its region, the others sums.
-            *s = if k % 7 == 6 { v } else { *s + v };
+            *s = if k % 8 == 6 { v } else { *s + v };
         }
+    }
+    let short: Vec<f64> = sums.chunks_exact(8).map(|p| p[7]).filter(|&c| c != f64::from(spp)).collect();
+    if let Some(least) = short.iter().copied().reduce(f64::min) {
+        return Err(
+            format!("{} pixels traced fewer than {spp} paths (as few as {least})", short.len()).into()
+        );
     }
     let spp = f64::from(spp);
     let (mut mean, mut var, mut region) = (vec![], vec![], vec![]);
-    for p in sums.chunks_exact(7) {
+    for p in sums.chunks_exact(8) {
         let m = Xyz::new(p[0], p[1], p[2]) / spp;
         let squares = Xyz::new(p[3], p[4], p[5]) / spp;
         // The variance of the mean of spp paths (the sample variance over spp − 1).

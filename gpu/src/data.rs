@@ -16,7 +16,7 @@
 //! let space = RgbSpace::srgb();
 //! // Spectrum 0: the space's illuminant (for its lights); 1: CIE A.
 //! let data = speclab_gpu::Data::new(DenseObserver::CIE_1931, space, &[space.illuminant(), &lights::CIE_A]);
-//! let uploaded = data.upload(&gpu.device); // buffers, bind group layout, bind group
+//! let uploaded = data.upload(&gpu.device)?; // buffers, bind group layout, bind group
 //! # let _ = uploaded;
 //! # Ok(())
 //! # }
@@ -27,6 +27,8 @@ use speclab::color::RgbSpace;
 use speclab::color::rgb_table::node;
 use speclab::spectrum::{DenseObserver, DenseSpectrum};
 use wgpu::util::DeviceExt;
+
+use crate::GpuError;
 
 /// The four buffers' contents (see the module).
 #[derive(Clone, Debug, PartialEq)]
@@ -84,11 +86,30 @@ impl Data {
         })
     }
 
-    /// The buffers on `device`, with group 0's layout and bind group.
-    #[must_use]
-    pub fn upload(&self, device: &wgpu::Device) -> Uploaded {
-        let labels = ["speclab_observer", "speclab_spectra", "speclab_rgb_table", "speclab_rgb_nodes"];
+    /// The buffers on `device`, with group 0's layout and bind group: a
+    /// [`GpuError::Device`] for a buffer over the device's storage binding
+    /// limit (a table of more than about 150 nodes per axis at the default
+    /// 128 MiB) or memory running out.
+    pub fn upload(&self, device: &wgpu::Device) -> Result<Uploaded, GpuError> {
+        let limit = device.limits().max_storage_buffer_binding_size;
         let bytes = self.bytes();
+        if let Some(b) = bytes.iter().find(|b| b.len() as u64 > limit) {
+            return Err(GpuError::Device(format!(
+                "a buffer of {} bytes, over the device's {limit}",
+                b.len()
+            )));
+        }
+        let scope = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let uploaded = self.create(device, &bytes);
+        match pollster::block_on(scope.pop()) {
+            Some(e) => Err(GpuError::Device(e.to_string())),
+            None => Ok(uploaded),
+        }
+    }
+
+    /// The buffers of `bytes`, the layout and the bind group.
+    fn create(&self, device: &wgpu::Device, bytes: &[Vec<u8>; 4]) -> Uploaded {
+        let labels = ["speclab_observer", "speclab_spectra", "speclab_rgb_table", "speclab_rgb_nodes"];
         let buffers = std::array::from_fn(|i| {
             device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some(labels[i]),
@@ -112,9 +133,9 @@ impl Data {
 }
 
 /// A compute bind group layout of storage buffers, binding `i` read-only
-/// where `read_only[i]`.
+/// where `read_only[i]` (at most the device's storage buffers per stage).
 #[must_use]
-pub fn group_layout(device: &wgpu::Device, label: &str, read_only: &[bool]) -> wgpu::BindGroupLayout {
+pub(crate) fn group_layout(device: &wgpu::Device, label: &str, read_only: &[bool]) -> wgpu::BindGroupLayout {
     let entries: Vec<wgpu::BindGroupLayoutEntry> = read_only
         .iter()
         .enumerate()

@@ -72,7 +72,8 @@ impl Gpu {
     /// `@group(1) @binding(1) var<storage, read_write> output: array<u32>`,
     /// or the same arrays of `f32`) on `invocations` invocations in
     /// workgroups of 64, with `data` as group 0, and returns `output`'s
-    /// `output_words` words. A shader error is an `Err`, not a panic.
+    /// `output_words` words. A shader error, a dispatch or buffer beyond the
+    /// device's limits, or memory running out is an `Err`, not a panic.
     pub fn run(
         &self,
         wgsl: &str,
@@ -81,8 +82,44 @@ impl Gpu {
         output_words: usize,
         invocations: u32,
     ) -> Result<Vec<u32>, GpuError> {
+        let limits = self.device.limits();
+        let groups = invocations.div_ceil(64);
+        if groups > limits.max_compute_workgroups_per_dimension {
+            return Err(GpuError::Device(format!(
+                "{invocations} invocations need {groups} workgroups of 64, over the device's {}",
+                limits.max_compute_workgroups_per_dimension
+            )));
+        }
+        let bytes = |words: usize| {
+            (words.max(1) as u64)
+                .checked_mul(4)
+                .filter(|&b| b <= limits.max_storage_buffer_binding_size)
+                .ok_or_else(|| GpuError::Device(format!("{words} words exceed a storage buffer binding")))
+        };
+        let (input_size, size) = (bytes(input.len())?, bytes(output_words)?);
         let device = &self.device;
-        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        // Every error of the call is caught here, not by wgpu's handler (which panics).
+        let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let staging = self.submit(wgsl, data, input, (input_size, size), groups);
+        let errors = [memory, validation].map(|scope| pollster::block_on(scope.pop()));
+        if let Some(e) = errors.into_iter().flatten().next() {
+            return Err(GpuError::Device(e.to_string()));
+        }
+        self.read_back(&staging, output_words)
+    }
+
+    /// Builds the kernel and its buffers, dispatches `groups` workgroups
+    /// and copies the output to a mappable buffer, returned.
+    fn submit(
+        &self,
+        wgsl: &str,
+        data: &Uploaded,
+        input: &[u32],
+        sizes: (u64, u64),
+        groups: u32,
+    ) -> wgpu::Buffer {
+        let device = &self.device;
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("speclab kernel"),
             source: wgpu::ShaderSource::Wgsl(wgsl.into()),
@@ -101,13 +138,10 @@ impl Gpu {
             compilation_options: wgpu::PipelineCompilationOptions::default(),
             cache: None,
         });
-        if let Some(e) = pollster::block_on(scope.pop()) {
-            return Err(GpuError::Device(e.to_string()));
-        }
-        let words = |w: &[u32]| -> Vec<u8> { w.iter().flat_map(|x| x.to_le_bytes()).collect() };
-        let input = storage(device, &words(if input.is_empty() { &[0] } else { input }), false);
-        let size = 4 * output_words.max(1) as u64;
-        let output = storage(device, &vec![0; size as usize], true);
+        let mut words: Vec<u8> = input.iter().flat_map(|x| x.to_le_bytes()).collect();
+        words.resize(sizes.0 as usize, 0);
+        let input = storage(device, &words, false);
+        let output = storage(device, &vec![0; sizes.1 as usize], true);
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("io"),
             layout: &io,
@@ -118,7 +152,7 @@ impl Gpu {
         });
         let staging = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("read back"),
-            size,
+            size: sizes.1,
             usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
         });
@@ -128,11 +162,11 @@ impl Gpu {
             pass.set_pipeline(&pipeline);
             pass.set_bind_group(0, &data.group, &[]);
             pass.set_bind_group(1, &group, &[]);
-            pass.dispatch_workgroups(invocations.div_ceil(64), 1, 1);
+            pass.dispatch_workgroups(groups, 1, 1);
         }
-        encoder.copy_buffer_to_buffer(&output, 0, &staging, 0, size);
+        encoder.copy_buffer_to_buffer(&output, 0, &staging, 0, sizes.1);
         self.queue.submit([encoder.finish()]);
-        self.read_back(&staging, output_words)
+        staging
     }
 
     /// `words` words of the mappable buffer `staging`, once the queue is done.

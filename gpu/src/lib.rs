@@ -21,7 +21,7 @@
 //! # fn main() -> Result<(), speclab_gpu::GpuError> {
 //! let gpu = speclab_gpu::Gpu::new()?; // a Vulkan adapter, or an error saying what to install
 //! let space = RgbSpace::srgb();
-//! let data = speclab_gpu::Data::new(DenseObserver::CIE_1931, space, &[space.illuminant()]).upload(&gpu.device);
+//! let data = speclab_gpu::Data::new(DenseObserver::CIE_1931, space, &[space.illuminant()]).upload(&gpu.device)?;
 //! let kernel = speclab_gpu::source(space) + "
 //! @group(1) @binding(0) var<storage, read> input: array<f32>;
 //! @group(1) @binding(1) var<storage, read_write> output: array<f32>;

@@ -49,13 +49,21 @@ fn speclab_fixed_position(u: f32, width: u32) -> u32 {
     return (hi << (32u - s)) | (lo >> s);
 }
 
+// u modulo 1, in [0, 1): u itself for u in [0, 1) (exactly as the CPU's
+// `fract`), 0 for 1, NaN and infinities; other values within an ulp of it.
+fn speclab_unit(u: f32) -> f32 {
+    let f = u - floor(u);
+    return select(0.0, f, f >= 0.0 && f < 1.0);
+}
+
 // Four wavelengths uniform over [360 + offset, 360 + offset + width] nm
-// (whole nanometres within 360–830), from the renderer's number u in [0, 1):
-// the hero at u and three rotations by a quarter, in fixed point
-// (speclab's `Domain::hero` for a uniform density, bit for bit).
+// (whole nanometres within 360–830), from the renderer's number u (taken
+// modulo 1): the hero at u and three rotations by a quarter, in fixed
+// point (speclab's `Domain::hero` for a uniform density, bit for bit for
+// u in [0, 1]).
 fn speclab_hero_uniform(u: f32, offset: u32, width: u32) -> SpeclabHero {
     let period = width << 16u;
-    let p0 = min(speclab_fixed_position(clamp(u, 0.0, 1.0), width), period - 1u);
+    let p0 = min(speclab_fixed_position(speclab_unit(u), width), period - 1u);
     let start = SPECLAB_DENSE_START + offset;
     let round = 0x8000u + (offset << 16u);
     var h: SpeclabHero;
@@ -82,17 +90,17 @@ fn speclab_nearest(lambda: f32) -> u32 {
 
 // pbrt-v4's visible density at lambda (1/nm), 0 outside 360–830 nm.
 fn speclab_visible_pdf(lambda: f32) -> f32 {
-    if (lambda < SPECLAB_VISIBLE_MIN || lambda > SPECLAB_VISIBLE_MAX) {
+    if (!(lambda >= SPECLAB_VISIBLE_MIN && lambda <= SPECLAB_VISIBLE_MAX)) {
         return 0.0;
     }
     let y = tanh(SPECLAB_VISIBLE_SLOPE * (lambda - SPECLAB_VISIBLE_CENTER));
     return SPECLAB_VISIBLE_NORM * (1.0 - y * y);
 }
 
-// The wavelength of pbrt-v4's visible density at u in [0, 1] and its
-// reciprocal density: (lambda, 1/pdf).
+// The wavelength of pbrt-v4's visible density at u (taken modulo 1) and
+// its reciprocal density: (lambda, 1/pdf).
 fn speclab_visible_sample(u: f32) -> vec2<f32> {
-    let y = SPECLAB_VISIBLE_T0 + u * (SPECLAB_VISIBLE_T1 - SPECLAB_VISIBLE_T0);
+    let y = SPECLAB_VISIBLE_T0 + speclab_unit(u) * (SPECLAB_VISIBLE_T1 - SPECLAB_VISIBLE_T0);
     let lambda = clamp(SPECLAB_VISIBLE_CENTER + atanh(y) / SPECLAB_VISIBLE_SLOPE, SPECLAB_VISIBLE_MIN, SPECLAB_VISIBLE_MAX);
     return vec2<f32>(lambda, 1.0 / (SPECLAB_VISIBLE_NORM * (1.0 - y * y)));
 }
@@ -101,8 +109,9 @@ fn speclab_visible_sample(u: f32) -> vec2<f32> {
 // quarter in primary-sample space (speclab's `Domain::VISIBLE.hero`).
 fn speclab_hero_visible(u: f32) -> SpeclabHero {
     var h: SpeclabHero;
+    let u0 = speclab_unit(u);
     for (var j = 0u; j < 4u; j++) {
-        var v = u + f32(j) * 0.25;
+        var v = u0 + f32(j) * 0.25;
         if (v >= 1.0) {
             v = v - 1.0;
         }
@@ -204,7 +213,8 @@ fn speclab_lerp3(a: vec3<f32>, b: vec3<f32>, t: f32) -> vec3<f32> {
 // The table's polynomial of rgb in [0, 1]³ (speclab's `RgbTable::albedo`):
 // greys the constants of their value, black and white 0 and 1 exactly.
 fn speclab_rgb_albedo(rgb: vec3<f32>) -> SpeclabRgbSpectrum {
-    let n = SPECLAB_RGB_RESOLUTION;
+    // The uploaded table's resolution: n nodes and n − 1 reciprocals.
+    let n = (arrayLength(&speclab_rgb_nodes) + 1u) / 2u;
     if (rgb.x == rgb.y && rgb.y == rgb.z) {
         let v = rgb.x;
         if (v <= 0.0) {
@@ -213,8 +223,8 @@ fn speclab_rgb_albedo(rgb: vec3<f32>) -> SpeclabRgbSpectrum {
         if (v >= 1.0) {
             return SpeclabRgbSpectrum(1.0, vec3<f32>(0.0, 0.0, SPECLAB_SIGMOID_HUGE));
         }
-        let w = 2.0 * v - 1.0;
-        return SpeclabRgbSpectrum(1.0, vec3<f32>(0.0, 0.0, w / sqrt(1.0 - w * w)));
+        // (2v − 1)/√(1 − (2v − 1)²), without its cancellation for small v.
+        return SpeclabRgbSpectrum(1.0, vec3<f32>(0.0, 0.0, (v - 0.5) / sqrt(v * (1.0 - v))));
     }
     var case_ = 2u;
     var zxy = vec3<f32>(rgb.z, rgb.x, rgb.y);
@@ -259,7 +269,7 @@ fn speclab_rgb_albedo(rgb: vec3<f32>) -> SpeclabRgbSpectrum {
 fn speclab_rgb_unbounded(rgb: vec3<f32>) -> SpeclabRgbSpectrum {
     let c = max(rgb, vec3<f32>(0.0));
     let largest = max(c.x, max(c.y, c.z));
-    if (!(largest > 0.0)) {
+    if (!(largest > 0.0 && largest <= 3.40282347e38)) {
         return SpeclabRgbSpectrum(0.0, vec3<f32>(0.0));
     }
     let scale = 2.0 * largest;
@@ -280,13 +290,16 @@ fn speclab_rgb_light(rgb: vec3<f32>) -> SpeclabRgbSpectrum {
 // ---- Planck's law ----------------------------------------------------
 
 // Spectral radiance of a blackbody at kelvin, W·sr⁻¹·m⁻²·nm⁻¹ (speclab's
-// `planck`), at four wavelengths (nm).
+// `planck`), at four wavelengths (nm; 0 at wavelengths that are not
+// positive). In f32 the denominator overflows where c₂/(λT) is large: 0
+// from c₂/(λT) = 50 (below about 800 K at 360 nm); tested from 1,000 K.
 fn speclab_planck(lambda: vec4<f32>, kelvin: f32) -> vec4<f32> {
     var v: vec4<f32>;
     for (var j = 0u; j < 4u; j++) {
         let l = lambda[j];
         let l2 = l * l;
-        v[j] = SPECLAB_PLANCK_C1_NM / (l2 * l2 * l * (exp(SPECLAB_PLANCK_C2_NM / (l * kelvin)) - 1.0));
+        let x = SPECLAB_PLANCK_C2_NM / (l * kelvin);
+        v[j] = select(0.0, SPECLAB_PLANCK_C1_NM / (l2 * l2 * l * (exp(min(x, 50.0)) - 1.0)), l > 0.0 && x < 50.0);
     }
     return v;
 }

@@ -25,7 +25,9 @@ pub fn setup() -> &'static Setup {
         eprintln!("adapter: {} ({:?}, {})", gpu.adapter.name, gpu.adapter.device_type, gpu.adapter.driver);
         let space = RgbSpace::srgb();
         let spectra: [&dyn speclab::Spectrum; 3] = [space.illuminant(), &lights::CIE_A, &patches::G4];
-        let data = Data::new(DenseObserver::CIE_1931, space, &spectra).upload(&gpu.device);
+        let data = Data::new(DenseObserver::CIE_1931, space, &spectra)
+            .upload(&gpu.device)
+            .unwrap_or_else(|e| panic!("{e}"));
         Setup { gpu, data }
     })
 }
@@ -79,11 +81,14 @@ pub fn worst(pairs: impl IntoIterator<Item = (f32, f32)>) -> (u64, f32, f32) {
         .fold((0, 0.0, 0.0), |w, p| if p.0 > w.0 { p } else { w })
 }
 
-/// `n` numbers in [0, 1): a stratified sweep, then the edges.
+/// `n` numbers in [0, 1): a stratified sweep, then the edges and numbers
+/// outside [0, 1) whose part modulo 1 is exact in `f32`.
 pub fn unit_inputs(n: usize) -> Vec<f32> {
     let mut u: Vec<f32> = (0..n).map(|i| (i as f32 + 0.5) / n as f32).collect();
     let one_below = f32::from_bits(1.0f32.to_bits() - 1);
     u.extend([0.0, f32::MIN_POSITIVE, 1e-30, 1e-7, 0.25, 0.5, 0.75, one_below, 0.999_999]);
+    // Outside [0, 1): taken modulo 1 (these exactly), NaN and ∞ as 0.
+    u.extend([1.0, 1.25, 2.5, -0.25, -3.75, f32::NAN, f32::INFINITY, f32::NEG_INFINITY]);
     u
 }
 

@@ -39,6 +39,7 @@ fn visible_hero_wavelengths_are_within_a_few_ulp() {
     let u = unit_inputs(20_000);
     let input: Vec<[u32; 1]> = u.iter().map(|v| [v.to_bits()]).collect();
     let body = format!("    let h = speclab_hero_visible(inf(0u));{HERO_OUT}");
+    // (u outside [0, 1) included: the GPU takes it modulo 1 as the CPU does.)
     let gpu = map::<1, 12>(&body, &input);
     let (mut lambdas, mut over, mut moved) = (vec![], 0.0f64, 0);
     for (&u, g) in u.iter().zip(&gpu) {

@@ -106,14 +106,21 @@ fn rgb_values(
         "    let h = speclab_hero_uniform(inf(3u), 0u, 470u);
     let s = {make}(vec3<f32>(inf(0u), inf(1u), inf(2u)));
     let v = {value};
-    for (var j = 0u; j < 4u; j++) {{ outf(j, v[j]); }}"
+    for (var j = 0u; j < 4u; j++) {{ outf(j, v[j]); }}
+    outf(4u, s.c.x); outf(5u, s.c.y); outf(6u, s.c.z);"
     );
-    let gpu = map::<4, 4>(&body, &input);
+    let gpu = map::<4, 7>(&body, &input);
     let (mut ulp, mut over) = (0, 0.0f64);
     for ((c, &u), g) in rgb.iter().zip(&u).zip(&gpu) {
         let h = Domain::UNIFORM_VISIBLE.hero::<4, f32>(u);
         let (spectrum, coefficients) = cpu(LinearRgb::new(c[0].into(), c[1].into(), c[2].into()));
         let values = h.sample(&spectrum).values;
+        // The table's coefficients to the bit (greys and black are constants
+        // computed, not looked up).
+        let looked_up = !(c[0] == c[1] && c[1] == c[2]) && coefficients[2].is_finite();
+        if looked_up {
+            assert_eq!(g[4..7], coefficients.map(f32::to_bits), "coefficients of {c:?}");
+        }
         for j in 0..4 {
             let (a, b) = (f32::from_bits(g[j]), values[j]);
             ulp = ulp.max(ulps(a, b));
@@ -173,6 +180,64 @@ fn rgb_unbounded_colours_and_lights_are_within_the_polynomials_bound() {
     });
     eprintln!("RGB light: {ulp} ULP; at most {over:.3} of the polynomial's bound");
     assert!(over <= 1.0, "{ulp} ULP, {over} of the bound");
+}
+
+#[test]
+fn greys_are_within_eight_ulp_down_to_the_darkest() {
+    // 10,000 greys from 1e-8 to 1 − 1e-7, logarithmically, and both ways.
+    let greys: Vec<f32> = (0..5_000)
+        .map(|i| 10f32.powf(-8.0 + 8.0 * i as f32 / 4_999.0))
+        .flat_map(|v| [v, 1.0 - v.max(1.2e-7)])
+        .collect();
+    let input: Vec<[u32; 2]> = greys.iter().map(|&v| [v.to_bits(), 0.37f32.to_bits()]).collect();
+    let body = "    let h = speclab_hero_uniform(inf(1u), 0u, 470u);
+    outf(0u, speclab_rgb_eval(speclab_rgb_albedo(vec3<f32>(inf(0u))), h.lambda).x);";
+    let gpu = map::<2, 1>(body, &input);
+    let h = Domain::UNIFORM_VISIBLE.hero::<4, f32>(0.37);
+    let space = RgbSpace::srgb();
+    let pairs = greys.iter().zip(&gpu).map(|(&v, g)| {
+        let grey = space.albedo(LinearRgb::new(v.into(), v.into(), v.into())).expect("in [0, 1]");
+        (f32::from_bits(g[0]), h.sample(&grey).values[0])
+    });
+    let (w, a, b) = worst(pairs.collect::<Vec<_>>());
+    eprintln!("greys: {w} ULP ({a} vs {b})");
+    // c₂ = (v − ½)/√(v(1 − v)) in f32 (three roundings and a square root,
+    // up to 3 ULP; the CPU's is f64, rounded once), and a dark grey's value
+    // ≈ 1/(4c₂²) doubles c₂'s relative error: 8 ULP.
+    assert!(w <= 8, "{w} ULP: {a} vs {b}");
+}
+
+#[test]
+fn colours_that_are_not_finite_are_black() {
+    let rgb = [[f32::INFINITY, 0.5, 0.2], [f32::NAN, 0.5, 0.2], [-1.0, -2.0, 0.0], [0.0; 3]];
+    let input: Vec<[u32; 3]> = rgb.iter().map(|c| c.map(f32::to_bits)).collect();
+    let body = "    let s = speclab_rgb_unbounded(vec3<f32>(inf(0u), inf(1u), inf(2u)));
+    outf(0u, s.scale);";
+    let gpu = map::<3, 1>(body, &input);
+    let space = RgbSpace::srgb();
+    for (c, g) in rgb.iter().zip(&gpu) {
+        let cpu = space.unbounded(LinearRgb::new(c[0].into(), c[1].into(), c[2].into())).scale();
+        // The CPU takes NaN as 0: (0, 0.5, 0.2) is not black there.
+        let want = if c[0].is_nan() { None } else { Some(cpu as f32) };
+        if let Some(want) = want {
+            assert_eq!(f32::from_bits(g[0]), want, "{c:?}");
+        }
+    }
+}
+
+/// Whether the device fuses `a·b + c` (or runs `fma` unfused): either is
+/// allowed by WGSL, and nothing else is. Printed: docs/gpu.md reads it.
+#[test]
+fn multiply_adds_are_fused_or_not_but_nothing_else() {
+    let a = 1.0f32 + 2f32.powi(-12);
+    let c = -(1.0f32 + 2f32.powi(-11));
+    let body = "    let a = inf(0u); let c = inf(1u); outf(0u, a * a + c); outf(1u, fma(a, a, c));";
+    let gpu = map::<2, 2>(body, &[[a.to_bits(), c.to_bits()]]);
+    let (plain, fma) = (f32::from_bits(gpu[0][0]), f32::from_bits(gpu[0][1]));
+    eprintln!("a·b + c: {plain:e}, fma: {fma:e} (fused: {:e}, unfused: 0)", 2f32.powi(-24));
+    for v in [plain, fma] {
+        assert!(v == 0.0 || v == 2f32.powi(-24), "{v:e}");
+    }
 }
 
 #[test]
