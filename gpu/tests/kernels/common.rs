@@ -57,6 +57,7 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {{
     let words: Vec<u32> = input.iter().flatten().copied().collect();
     let out = s.gpu.run(&kernel, &s.data, &words, OUT * input.len(), input.len() as u32);
     let out = out.unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(out.len(), OUT * input.len(), "the output's words");
     out.chunks_exact(OUT).map(|c| std::array::from_fn(|k| c[k])).collect()
 }
 

@@ -4,5 +4,6 @@
 
 mod colour;
 mod common;
+mod errors;
 mod hero;
 mod spectra;

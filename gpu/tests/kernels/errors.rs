@@ -1,0 +1,26 @@
+//! What a caller can get wrong comes back as an error, not a panic.
+
+use speclab::color::RgbSpace;
+
+use crate::common::setup;
+
+#[test]
+fn a_broken_kernel_or_a_dispatch_past_the_limits_is_an_error() {
+    let s = setup();
+    let broken = speclab_gpu::source(RgbSpace::srgb())
+        + "@compute @workgroup_size(64) fn main() { let x: u32 = 1.5; }";
+    let e = s.gpu.run(&broken, &s.data, &[], 1, 1).expect_err("a type error");
+    assert!(e.to_string().contains("refused"), "{e}");
+    let kernel = speclab_gpu::source(RgbSpace::srgb())
+        + "@group(1) @binding(0) var<storage, read> input: array<u32>;
+@group(1) @binding(1) var<storage, read_write> output: array<u32>;
+@compute @workgroup_size(64) fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if (id.x < arrayLength(&output)) { output[id.x] = input[0] + id.x; }
+}";
+    let e = s.gpu.run(&kernel, &s.data, &[7], 1, u32::MAX).expect_err("too many workgroups");
+    assert!(e.to_string().contains("workgroups"), "{e}");
+    let e = s.gpu.run(&kernel, &s.data, &[7], usize::MAX / 2, 1).expect_err("too large an output");
+    assert!(e.to_string().contains("exceed"), "{e}");
+    // And the same kernel, within the limits, runs.
+    assert_eq!(s.gpu.run(&kernel, &s.data, &[7], 3, 3).expect("it runs"), [7, 8, 9]);
+}
