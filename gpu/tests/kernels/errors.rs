@@ -24,3 +24,20 @@ fn a_broken_kernel_or_a_dispatch_past_the_limits_is_an_error() {
     // And the same kernel, within the limits, runs.
     assert_eq!(s.gpu.run(&kernel, &s.data, &[7], 3, 3).expect("it runs"), [7, 8, 9]);
 }
+
+/// A buffer of exactly the device's storage binding limit uploads; one
+/// word more is an error.
+#[test]
+fn data_at_the_binding_limit_uploads_and_past_it_is_an_error() {
+    let s = setup();
+    let limit = s.gpu.device.limits().max_storage_buffer_binding_size as usize;
+    let data = |floats: usize| speclab_gpu::Data {
+        observer: vec![[0.0; 4]; 471],
+        spectra: vec![0.0; floats],
+        rgb_table: vec![0.0; 3],
+        rgb_nodes: vec![0.0, 1.0, 1.0],
+    };
+    assert!(data(limit / 4).upload(&s.gpu.device).is_ok());
+    let e = data(limit / 4 + 1).upload(&s.gpu.device).expect_err("past the limit");
+    assert!(e.to_string().contains("over the device's"), "{e}");
+}
