@@ -21,8 +21,12 @@ fn a_broken_kernel_or_a_dispatch_past_the_limits_is_an_error() {
     assert!(e.to_string().contains("workgroups"), "{e}");
     let e = s.gpu.run(&kernel, &s.data, &[7], usize::MAX / 2, 1).expect_err("too large an output");
     assert!(e.to_string().contains("exceed"), "{e}");
-    // And the same kernel, within the limits, runs.
+    // And the same kernel, within the limits, runs: at the most workgroups
+    // a dimension takes too, one invocation more is refused.
     assert_eq!(s.gpu.run(&kernel, &s.data, &[7], 3, 3).expect("it runs"), [7, 8, 9]);
+    let most = s.gpu.device.limits().max_compute_workgroups_per_dimension * 64;
+    assert_eq!(s.gpu.run(&kernel, &s.data, &[7], 3, most).expect("the most workgroups"), [7, 8, 9]);
+    assert!(s.gpu.run(&kernel, &s.data, &[7], 3, most + 1).is_err());
 }
 
 /// A buffer of exactly the device's storage binding limit uploads; one
