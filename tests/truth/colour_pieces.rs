@@ -190,6 +190,14 @@ fn cie_2015_observers() {
         close(&sums(o, light), &xy, 1e-10, o.name());
     }
     assert_eq!(StandardObserver::named("CIE 2015 10°").unwrap(), StandardObserver::Cie2015_10);
+    assert_eq!(StandardObserver::named("2015 2 deg").unwrap(), StandardObserver::Cie2015_2);
+    for (name, o) in [
+        ("CIE 2015 2°", StandardObserver::Cie2015_2),
+        ("2015 2°", StandardObserver::Cie2015_2),
+        ("2015 10deg", StandardObserver::Cie2015_10),
+    ] {
+        assert_eq!(StandardObserver::named(name).unwrap(), o, "{name}");
+    }
 }
 
 /// Ohno 2013 where colour's tests do not go: 12 points on the triangular
