@@ -198,6 +198,10 @@ fn cie_2015_observers() {
     ] {
         assert_eq!(StandardObserver::named(name).unwrap(), o, "{name}");
     }
+    // Each observer's 1 nm table leads back to it.
+    for o in StandardObserver::ALL {
+        assert_eq!(StandardObserver::of_dense(&o.dense()), o, "{}", o.name());
+    }
 }
 
 /// Ohno 2013 where colour's tests do not go: 12 points on the triangular
