@@ -54,6 +54,8 @@ fn observers_as_sensors_and_sensors_from_spectra() {
     let flat = Constant::new(0.5);
     let own = Sensor::new("flat", [&flat, &flat, &flat]).unwrap();
     assert_eq!(own.curves(600.5), [0.5; 3]);
+    // Its ∫ȳ as a sample's normalisation reads it: 0.5 over 470 nm.
+    assert!((crate::spectrum::Observer::y_integral(&own, WavelengthRange::VISIBLE) - 235.0).abs() < 1e-9);
     assert!(own != cie && own.clone() == own);
     let negative = FnSpectrum(|l: f64| if l > 700.0 { -1.0 } else { 1.0 });
     let e = Sensor::new("bad", [&flat, &negative, &flat]).unwrap_err();

@@ -61,6 +61,10 @@ fn uniform_stays_uniform() {
         assert!((lambda - (LAMBDA_MIN + u * LAMBDA_WIDTH)).abs() < 1e-9 && (inv - LAMBDA_WIDTH).abs() < 1e-9);
     }
     assert_eq!((binned.pdf(379.9), binned.pdf(730.1), binned.pdf(f64::NAN)), (0.0, 0.0, 0.0));
+    assert_eq!(binned.support(), crate::spectrum::WavelengthRange::ASSIGNMENT);
+    // Only a uniform density says so (a histogram of one is not drawn in
+    // fixed point).
+    assert!(Uniform::ASSIGNMENT.is_uniform() && !Visible::VISIBLE.is_uniform() && !binned.is_uniform());
 }
 
 #[test]
