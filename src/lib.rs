@@ -104,6 +104,8 @@ mod doc_pages {
     pub struct Film;
     #[doc = include_str!("../docs/fitted.md")]
     pub struct Fitted;
+    #[doc = include_str!("../docs/gpu.md")]
+    pub struct Gpu;
     #[doc = include_str!("../docs/grid.md")]
     pub struct Grid;
     #[doc = include_str!("../docs/library.md")]
