@@ -300,10 +300,42 @@ mod tests {
         for outside in [359.0, 830.5, f64::NAN] {
             assert!(Domain::VISIBLE.hero_at::<4, f64>(outside).is_err(), "{outside}");
         }
+        // Inside the range where the density is 0: no sample has its hero there.
+        let gap = Domain::new(Gap, DenseObserver::CIE_1931).unwrap();
+        assert!(gap.hero_at::<4, f64>(550.0).is_err());
+        let h = gap.hero_at::<4, f64>(450.0).unwrap();
+        assert!((h.lambda()[0] - 450.0).abs() < 1e-9);
         let own = Domain::ASSIGNMENT.wavelengths([500.0, 790.0], [0.01, 0.01]);
         assert!(matches!(own, Err(Error::SampleWavelength { index: 1, .. })));
         assert!(Domain::ASSIGNMENT.wavelengths([500.0, 790.0], [0.01, 0.0]).is_ok());
         let one = Domain::VISIBLE.reference(&[&Constant::new(1.0)]).unwrap();
         assert!((one.y / Domain::VISIBLE.y_integral() - 1.0).abs() < 1e-12);
+    }
+
+    /// Uniform over 360–500 and 600–830 nm, 0 between.
+    struct Gap;
+
+    impl WavelengthPdf for Gap {
+        fn sample(&self, u: f64) -> f64 {
+            let x = u * 370.0;
+            if x < 140.0 { 360.0 + x } else { 460.0 + x }
+        }
+        fn pdf(&self, lambda: f64) -> f64 {
+            let inside = (360.0..=500.0).contains(&lambda) || (600.0..=830.0).contains(&lambda);
+            if inside { 1.0 / 370.0 } else { 0.0 }
+        }
+        fn support(&self) -> WavelengthRange {
+            WavelengthRange::VISIBLE
+        }
+        fn cdf(&self, lambda: f64) -> Option<f64> {
+            let l = lambda.clamp(360.0, 830.0);
+            Some(if l < 500.0 {
+                (l - 360.0) / 370.0
+            } else if l < 600.0 {
+                140.0 / 370.0
+            } else {
+                (l - 460.0) / 370.0
+            })
+        }
     }
 }
