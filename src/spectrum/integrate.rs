@@ -166,6 +166,8 @@ mod tests {
         assert_eq!(halved.kinks(), tint.kinks());
         let product = crate::spectrum::Product::new(vec![&tint as &dyn Spectrum, &patches::G4]);
         assert!(product.kinks().len() >= tint.kinks().len());
+        // A table's kinks are its breaks (the default for a piecewise polynomial).
+        assert_eq!(patches::G4.kinks(), patches::G4.breaks());
         let mixture = crate::spectrum::Mixture::new().with(1.0, &tint).unwrap();
         assert_eq!(mixture.kinks(), tint.kinks());
         // The tint of a constant polynomial is half the illuminant.
