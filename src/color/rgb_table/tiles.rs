@@ -133,4 +133,15 @@ mod tests {
         assert!(cache.get(&[], 64, 0, [0, MAX_TILES]).is_empty());
         assert_eq!(cache.decoded(), 0);
     }
+
+    /// A lookup decodes its colour's tile, once: the count says so.
+    #[test]
+    fn a_lookup_decodes_one_tile_once() {
+        use crate::color::rgb_table::RgbTable;
+        let table = RgbTable::from_bytes(RgbTable::SRGB.as_bytes(), "sRGB's bytes").expect("a table");
+        assert_eq!(table.decoded_tiles(), (0, 192));
+        table.albedo([0.6, 0.3, 0.2]).expect("an albedo");
+        table.albedo([0.6, 0.3, 0.21]).expect("an albedo");
+        assert_eq!(table.decoded_tiles(), (1, 192));
+    }
 }
