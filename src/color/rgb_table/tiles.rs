@@ -143,5 +143,10 @@ mod tests {
         table.albedo([0.6, 0.3, 0.2]).expect("an albedo");
         table.albedo([0.6, 0.3, 0.21]).expect("an albedo");
         assert_eq!(table.decoded_tiles(), (1, 192));
+        // A dark red with much blue: case 0, the first tile along z, a later
+        // one along y, whose slot is not the first's; its coefficients are
+        // the compile-time lookup's (which reads the file, not the tiles).
+        let rgb = crate::color::LinearRgb::new(0.004, 0.0008, 0.0032);
+        assert_eq!(table.albedo(rgb).ok(), RgbTable::SRGB.const_albedo(rgb));
     }
 }
