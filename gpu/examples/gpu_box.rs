@@ -161,7 +161,7 @@ const SCENE_LIGHT_HALF: f32 = {half:?};
 const SCENE_OFFSET: u32 = {offset}u;
 const SCENE_WIDTH: u32 = {width}u;
 ",
-        walls = list(scene.walls.iter().map(|&m| material(m).replace("TEXTURE", "1000u")).collect()),
+        walls = list(scene.walls.iter().map(|&m| material(m)).collect()),
         centres = list(scene.spheres.iter().map(|s| v3(s.0)).collect()),
         radii = list(scene.spheres.iter().map(|s| format!("{:?}", s.1 as f32)).collect()),
         spheres = list(scene.spheres.iter().map(|s| material(s.2)).collect()),
