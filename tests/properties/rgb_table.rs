@@ -129,6 +129,26 @@ fn damaged_and_foreign_tables_are_refused() {
     );
 }
 
+/// "Within 1e-5" is relative for matrix entries above 1 (sRGB's 3.24,
+/// −1.54, 1.88): a space whose one primary coordinate moved by 1e-6
+/// takes sRGB's table (its matrix moves by up to 9.9e-6 of an entry,
+/// 3.2e-5 absolute); one moved by 5e-6 (1.2e-5 to 5.0e-5 of an entry)
+/// does not.
+#[test]
+fn a_table_fits_a_space_within_1e_5_relative() {
+    let srgb = RgbSpace::srgb();
+    let table = RgbTable::fit(srgb, 2);
+    for (d, takes) in [(1e-6, true), (5e-6, false)] {
+        for coordinate in 0..6 {
+            let mut primaries = srgb.primaries();
+            primaries[coordinate / 2][coordinate % 2] += d;
+            let space = RgbSpace::new("moved", primaries, srgb.white_point(), srgb.illuminant()).unwrap();
+            let given = space.with_table(table.clone());
+            assert_eq!(given.is_ok(), takes, "coordinate {coordinate} moved by {d:e}");
+        }
+    }
+}
+
 /// A `const` colour is the run-time lookup's, to the bit: 8 colours
 /// evaluated at compile time (one `const` item holds a few: each decodes
 /// its corners' blocks in the compiler), and 2,000 through the cube and
