@@ -184,9 +184,9 @@ impl<P: WavelengthPdf, O: Observer> Domain<P, O> {
         let inside = self.range().contains(l) && self.pdf.pdf(l) > 0.0;
         match self.pdf.cdf(l) {
             Some(u) if inside => {
-                // The last u of [0, 1) draws the range's end.
-                let u = if u < 1.0 { u } else { 1.0 - f64::EPSILON / 2.0 };
-                Ok(self.hero(T::from_f64(u)))
+                // The last u of [0, 1) in `T` draws the range's end.
+                let u = T::from_f64(u);
+                Ok(self.hero(if u < T::ONE { u } else { T::BELOW_ONE }))
             }
             _ => Err(Error::SampleWavelength { index: 0, lambda: l, pdf: self.pdf.pdf(l) }),
         }
@@ -294,9 +294,15 @@ mod tests {
             let g = Domain::UNIFORM_VISIBLE.hero::<4, f64>(u);
             assert_eq!(Domain::UNIFORM_VISIBLE.hero_at::<4, f64>(g.lambda()[0]).unwrap(), g);
         }
-        // The range's last wavelength draws from the last u below 1.
+        // The range's last wavelength draws from the last u below 1, in
+        // each precision (in f32 the f64 just below 1 is 1, which wraps).
         let end = Domain::UNIFORM_VISIBLE.hero_at::<4, f64>(830.0).unwrap();
         assert!((end.lambda()[0] - 830.0).abs() < 1e-4);
+        let end = Domain::VISIBLE.hero_at::<4, f32>(830.0).unwrap();
+        assert_eq!(end, Domain::VISIBLE.hero::<4, f32>(1.0 - f32::EPSILON / 2.0));
+        assert!((end.lambda()[0] - 830.0).abs() < 1e-3, "{:?}", end.lambda());
+        let end = Domain::VISIBLE.hero_at::<4, f64>(830.0).unwrap();
+        assert_eq!(end, Domain::VISIBLE.hero::<4, f64>(1.0 - f64::EPSILON / 2.0));
         for outside in [359.0, 830.5, f64::NAN] {
             assert!(Domain::VISIBLE.hero_at::<4, f64>(outside).is_err(), "{outside}");
         }

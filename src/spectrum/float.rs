@@ -99,6 +99,9 @@ pub(crate) mod sealed {
     pub trait Sealed: Sized {
         /// Four lanes of this precision.
         type V4: Vector;
+        /// The largest value below 1: the last `u` of `[0, 1)` (an `f64`
+        /// just below 1 rounds to 1 in `f32`).
+        const BELOW_ONE: Self;
         /// Four values as a vector.
         fn v4(a: [Self; 4]) -> Self::V4;
         /// A vector's four values.
@@ -200,6 +203,7 @@ impl sealed::Vector for wide::f32x4 {
 
 impl sealed::Sealed for f32 {
     type V4 = wide::f32x4;
+    const BELOW_ONE: f32 = 1.0 - f32::EPSILON / 2.0;
     #[inline(always)]
     fn v4(a: [f32; 4]) -> wide::f32x4 {
         wide::f32x4::new(a)
@@ -307,6 +311,7 @@ impl sealed::Vector for wide::f64x4 {
 
 impl sealed::Sealed for f64 {
     type V4 = wide::f64x4;
+    const BELOW_ONE: f64 = 1.0 - f64::EPSILON / 2.0;
     #[inline(always)]
     fn v4(a: [f64; 4]) -> wide::f64x4 {
         wide::f64x4::new(a)
