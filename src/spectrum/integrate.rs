@@ -131,7 +131,7 @@ pub(crate) fn integral(s: &dyn Spectrum, a: f64, b: f64) -> f64 {
 mod tests {
     use super::*;
     use crate::spectrum::data::{lights, patches};
-    use crate::spectrum::{Blackbody, FnSpectrum, Scaled, SigmoidPolynomial};
+    use crate::spectrum::{Blackbody, FnSpectrum, Scaled, SigmoidPolynomial, TabulatedSpectrum};
 
     /// With the assignment's observer over its range, the same integral;
     /// with a 1 nm observer, a constant integrates to the table's trapezoids.
@@ -175,6 +175,28 @@ mod tests {
         (0..3).for_each(|c| assert!((tinted[c] - 0.5 * plain[c]).abs() < 1e-13 * plain[c], "{tinted:?}"));
         let one = integral(&tint, 400.0, 700.0);
         assert!((one - 0.5 * lights::CIE_D65.integral(400.0, 700.0)).abs() < 1e-12 * one, "{one}");
+    }
+
+    /// A closure that computes a 5 nm table integrates as the table does
+    /// (its pieces end on the data's 5 nm grid, from 380 nm), over ranges
+    /// starting on and off the grid, past its first 5 nm and within one
+    /// step, and from below 380 nm: the cubic G4, the spiky linear F11 and
+    /// D50 (linear, 5 nm from 300 nm).
+    #[test]
+    fn a_closure_of_a_table_integrates_on_the_5_nm_grid() {
+        let g4 = FnSpectrum(|lambda: f64| patches::G4.eval(lambda));
+        let f11 = FnSpectrum(|lambda: f64| lights::F11.eval(lambda));
+        let d50 = FnSpectrum(|lambda: f64| lights::D50.eval(lambda));
+        let pairs: [(&dyn Spectrum, &TabulatedSpectrum); 3] =
+            [(&g4, &patches::G4), (&f11, &lights::F11), (&d50, &lights::D50)];
+        let ranges =
+            [(380.0, 730.0), (383.2, 611.7), (437.5, 702.25), (402.5, 404.0), (372.5, 700.0), (322.5, 700.0)];
+        for (closure, table) in pairs {
+            for (a, b) in ranges {
+                let (got, exact) = (integral(closure, a, b), integral(table, a, b));
+                assert!((got - exact).abs() <= 1e-12 * exact.abs(), "[{a}, {b}]: {got} vs {exact}");
+            }
+        }
     }
 
     /// The documented accuracy of quadrature for smooth spectra: the rule
