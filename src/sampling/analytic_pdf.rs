@@ -205,6 +205,10 @@ mod tests {
             let computed = Visible::over(v.range());
             assert!((v.t0 - computed.t0).abs() <= 2.0 * f64::EPSILON, "{v:?}");
             assert!((v.t1 - computed.t1).abs() <= 2.0 * f64::EPSILON, "{v:?}");
+            // What a shader is given, from the public constants alone.
+            let ends =
+                [v.range().min(), v.range().max()].map(|l| (Visible::SLOPE * (l - Visible::CENTER)).tanh());
+            (0..2).for_each(|i| assert!((v.tanh_ends()[i] - ends[i]).abs() <= 2.0 * f64::EPSILON, "{v:?}"));
             // The density integrates to 1 over its range (midpoint rule, 0.01 nm).
             let (r, n) = (v.range(), 47_000);
             let h = r.width() / f64::from(n);
