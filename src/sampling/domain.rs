@@ -277,6 +277,15 @@ mod tests {
             Domain::new(Uniform::over(WavelengthRange::new(400.5, 700.0).unwrap()), DenseObserver::CIE_1931)
                 .unwrap();
         assert_eq!(odd.hero::<4, f64>(0.25), odd.hero_by_cdf(0.25), "not whole nanometres: by the CDF");
+        // Whole nanometres inside 360–830 nm: in fixed point over that range.
+        let inner =
+            Domain::new(Uniform::over(WavelengthRange::new(400.0, 700.0).unwrap()), DenseObserver::CIE_1931)
+                .unwrap();
+        for u in [0.0f64, 0.1234, 0.5, 0.999] {
+            let (fixed, by_cdf) = (inner.hero::<4, f64>(u), inner.hero_by_cdf::<4, f64>(u));
+            (0..4).for_each(|j| assert!((fixed.lambda()[j] - by_cdf.lambda()[j]).abs() < 1e-4, "{u}"));
+            assert_eq!(fixed.lambda()[0], 400.0 + (u * 300.0 * 65536.0).floor() / 65536.0, "{u}");
+        }
     }
 
     /// A density reaching past the observer's data is refused; a hero
