@@ -241,6 +241,9 @@ mod tests {
         let assignment = DenseObserver::ASSIGNMENT.y_integral(WavelengthRange::ASSIGNMENT);
         assert_eq!(Domain::ASSIGNMENT.y_integral(), assignment);
         assert!((visible - 106.8569).abs() < 1e-4 && (assignment - 106.8489).abs() < 1e-4);
+        // The exact observer's, made at run time: the constant's cubic integral.
+        let exact = Domain::new(Uniform::ASSIGNMENT, AssignmentObserver).unwrap();
+        assert!((exact.y_integral() / Domain::ASSIGNMENT_EXACT.y_integral() - 1.0).abs() < 1e-14);
         for y in [white(&Domain::VISIBLE, 1 << 14), white(&Domain::UNIFORM_VISIBLE, 1 << 14)] {
             assert!((y - 1.0).abs() < 1e-5, "{y}");
         }
