@@ -289,6 +289,10 @@ mod tests {
         assert!((StandardObserver::Cie1931.y_integral(half).unwrap() - expected).abs() < 1e-15);
         let a = StandardObserver::Assignment.y_integral(WavelengthRange::ASSIGNMENT).unwrap();
         assert!((a - observer::Y_BAR_INTEGRAL).abs() < 1e-9 * a);
+        // As the observer of a path (the trait), the same integral.
+        let traced = Observer::y_integral(&StandardObserver::Cie1964, WavelengthRange::VISIBLE);
+        assert_eq!(traced, StandardObserver::Cie1964.y_integral(WavelengthRange::VISIBLE).unwrap());
+        assert!((traced - 116.6).abs() < 0.1, "{traced}");
     }
 
     #[test]
