@@ -17,11 +17,12 @@
 
 use crate::sampling::density::{WavelengthPdf, reciprocal};
 use crate::spectrum::WavelengthRange;
+use crate::spectrum::float::sealed::Sealed;
 
 /// Clamps `u` into `[0, 1)`; NaN becomes 0.
 #[inline]
 pub(crate) fn unit(u: f64) -> f64 {
-    if u > 0.0 { u.min(1.0 - f64::EPSILON / 2.0) } else { 0.0 }
+    if u > 0.0 { u.min(f64::BELOW_ONE) } else { 0.0 }
 }
 
 /// The uniform density `1/W` over a range.

@@ -187,7 +187,7 @@ impl PiecewisePdf {
 
     /// [`PiecewisePdf::sample`] and the density there, from the same piece.
     pub(crate) fn sample_with_pdf(&self, u: f64) -> (f64, f64) {
-        let u = if u > 0.0 { u.min(1.0 - f64::EPSILON / 2.0) } else { 0.0 };
+        let u = crate::sampling::analytic_pdf::unit(u);
         let total = self.total();
         let target = u * total;
         // The first piece whose CDF at its end exceeds the target has mass:
